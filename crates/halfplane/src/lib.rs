@@ -1,0 +1,17 @@
+//! # halfplane
+//!
+//! Frictional contact of elastically similar bodies idealised as half-planes, under varying
+//! normal load P, shear load Q and bulk tension sigma. See `THEORY.md` in the project for the sign
+//! conventions.
+
+pub mod error;
+pub mod load;
+pub mod material;
+pub mod profile;
+mod quadrature;
+mod spline;
+
+pub use error::{Error, Result};
+pub use load::{Cycle, LoadPoint};
+pub use material::{Compliance, Friction, Material};
+pub use profile::{Profile, Shape};

@@ -1,0 +1,103 @@
+//! Load points and the in-phase cycle between two of them.
+//!
+//! Sign conventions (THEORY.md "Load cycle and labelling"): `normal` P > 0 compresses the contact;
+//! `shear` Q and `bulk` sigma (tension in one body, parallel to the interface) are positive as in
+//! the paper's Figure 1. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
+//! so `dQ = Q2 - Q1 >= 0`, and the paper's `dsigma = sigma1 - sigma2`.
+
+use crate::error::{finite, positive, Result};
+
+/// Normal force P (> 0), shear force Q (force per unit thickness) and bulk tension sigma (stress).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadPoint {
+    /// Normal force per unit thickness P (N/mm), > 0.
+    pub normal: f64,
+    /// Shear force per unit thickness Q (N/mm).
+    pub shear: f64,
+    /// Bulk tension sigma in one body (MPa).
+    pub bulk: f64,
+}
+
+impl LoadPoint {
+    /// Validates P > 0 and that all three are finite. `name` prefixes the field names in errors
+    /// (for example `cycle.point1`).
+    pub fn new(name: &str, normal: f64, shear: f64, bulk: f64) -> Result<Self> {
+        positive(&format!("{name}.normal"), normal)?;
+        finite(&format!("{name}.shear"), shear)?;
+        finite(&format!("{name}.bulk"), bulk)?;
+        Ok(Self {
+            normal,
+            shear,
+            bulk,
+        })
+    }
+
+    /// The point a fraction `t` of the way from `self` to `other` (in-phase loading is a straight
+    /// segment in P-Q-sigma space).
+    pub fn lerp(&self, other: &LoadPoint, t: f64) -> LoadPoint {
+        LoadPoint {
+            normal: self.normal + t * (other.normal - self.normal),
+            shear: self.shear + t * (other.shear - self.shear),
+            bulk: self.bulk + t * (other.bulk - self.bulk),
+        }
+    }
+}
+
+/// An in-phase cycle between two load points, labelled internally by Q.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cycle {
+    /// The end with the smaller Q (point 1 of THEORY.md).
+    pub low: LoadPoint,
+    /// The end with the larger Q (point 2 of THEORY.md).
+    pub high: LoadPoint,
+    /// True when the caller's first point is `high` (the points were given in the other order).
+    pub swapped: bool,
+}
+
+impl Cycle {
+    /// Orders the two points by Q. Equal Q keeps the given order.
+    pub fn new(first: LoadPoint, second: LoadPoint) -> Self {
+        if second.shear >= first.shear {
+            Self {
+                low: first,
+                high: second,
+                swapped: false,
+            }
+        } else {
+            Self {
+                low: second,
+                high: first,
+                swapped: true,
+            }
+        }
+    }
+
+    /// `dQ = Q2 - Q1 >= 0`.
+    pub fn shear_range(&self) -> f64 {
+        self.high.shear - self.low.shear
+    }
+
+    /// The paper's `dsigma = sigma1 - sigma2` (note the order).
+    pub fn bulk_range(&self) -> f64 {
+        self.low.bulk - self.high.bulk
+    }
+
+    /// `dP = P2 - P1` (either sign).
+    pub fn normal_range(&self) -> f64 {
+        self.high.normal - self.low.normal
+    }
+
+    /// Mean normal load `P0 = (P1 + P2)/2`.
+    pub fn mean_normal(&self) -> f64 {
+        0.5 * (self.low.normal + self.high.normal)
+    }
+
+    /// The caller's points, in the caller's order.
+    pub fn as_given(&self) -> (LoadPoint, LoadPoint) {
+        if self.swapped {
+            (self.high, self.low)
+        } else {
+            (self.low, self.high)
+        }
+    }
+}
