@@ -66,6 +66,29 @@ pub enum Error {
         smaller_half_width: f64,
     },
 
+    /// Gross sliding at an end of the cycle, where an analysis needs partial slip.
+    #[error(
+        "the contact slides at the {point} point: |Q| = {shear:.6} >= f P = {limit:.6}; no steady partial-slip state exists \
+         (`halfplane steady` reports this as the gross-sliding regime)"
+    )]
+    GrossSliding {
+        /// "first" or "second", as given.
+        point: &'static str,
+        /// |Q| there.
+        shear: f64,
+        /// f P there.
+        limit: f64,
+    },
+
+    /// The asymptotic estimate is undefined (its stick-zone load P_K is not positive).
+    #[error("the asymptotic estimate P_K = {p_k:.6} at the {edge} edge is not positive: the edge description breaks down for this cycle")]
+    AsymptoticBreakdown {
+        /// "left" or "right".
+        edge: &'static str,
+        /// The estimate's P_K.
+        p_k: f64,
+    },
+
     /// An iterative solve did not reach its tolerance.
     #[error(
         "{what} did not converge in {iterations} iterations (last relative step {last_step:e})"

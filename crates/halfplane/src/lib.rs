@@ -15,3 +15,11 @@ pub use error::{Error, Result};
 pub use load::{Cycle, LoadPoint};
 pub use material::{Compliance, Friction, Material};
 pub use profile::{Profile, Shape};
+pub mod closed_form;
+pub mod normal;
+pub mod steady;
+
+pub use normal::Contact;
+pub use steady::{analyse, Regime, SteadyOptions, SteadyState, StickZone};
+pub mod asymptotic;
+pub mod evolution;

@@ -1,0 +1,155 @@
+//! The asymptotic edge description (paper, section "Asymptotic representation"; Fleury et al.
+//! 2017), with the slip-zone formulas as corrected in THEORY.md.
+//!
+//! Sign convention: a full-stick shear traction behaves as `q ~ K_T/sqrt(s)` at distance s from
+//! an edge, with q positive in the direction of positive Q at both edges. Bulk tension adds to
+//! the shear at the left edge and subtracts at the right.
+
+use crate::error::{Error, Result};
+use crate::load::{Cycle, LoadPoint};
+use crate::normal::Contact;
+use crate::steady::StickZone;
+use std::f64::consts::PI;
+
+/// A contact edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    /// x = -a.
+    Left,
+    /// x = +a.
+    Right,
+}
+
+impl Edge {
+    /// +1 at the left edge, -1 at the right: the sign of the bulk-tension term.
+    fn bulk_sign(self) -> f64 {
+        match self {
+            Edge::Left => 1.0,
+            Edge::Right => -1.0,
+        }
+    }
+
+    /// "left" or "right".
+    pub fn name(self) -> &'static str {
+        match self {
+            Edge::Left => "left",
+            Edge::Right => "right",
+        }
+    }
+}
+
+/// Shear intensity in full stick: `K_T = Q/(pi sqrt(2a)) +/- (sigma/4) sqrt(a/2)`, + at the left
+/// edge (THEORY.md "Asymptotic edge description").
+pub fn shear_intensity(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f64 {
+    shear / (PI * (2.0 * half_width).sqrt())
+        + edge.bulk_sign() * 0.25 * bulk * (0.5 * half_width).sqrt()
+}
+
+/// Equivalent shear force `S = Q +/- pi a sigma/4` (paper eq. `equivalent_shear_force`), the shear
+/// alone that gives the same K_T at that edge.
+pub fn equivalent_shear(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f64 {
+    shear + edge.bulk_sign() * PI * half_width * bulk / 4.0
+}
+
+/// The edge quantities at one load point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EdgeState {
+    /// Contact half-width a.
+    pub half_width: f64,
+    /// Normal intensity K_N (same at both edges).
+    pub normal_intensity: f64,
+    /// `[K_T at left, K_T at right]`.
+    pub shear_intensity: [f64; 2],
+    /// `[S at left, S at right]`.
+    pub equivalent_shear: [f64; 2],
+}
+
+impl EdgeState {
+    /// Evaluates the edge quantities at `point`.
+    pub fn at(contact: &Contact, point: &LoadPoint) -> Result<Self> {
+        let a = contact.half_width(point.normal)?;
+        Ok(Self {
+            half_width: a,
+            normal_intensity: contact.normal_intensity(a)?,
+            shear_intensity: [Edge::Left, Edge::Right]
+                .map(|e| shear_intensity(point.shear, point.bulk, a, e)),
+            equivalent_shear: [Edge::Left, Edge::Right]
+                .map(|e| equivalent_shear(point.shear, point.bulk, a, e)),
+        })
+    }
+}
+
+/// Slip-zone size at `edge` when the load has moved from the reversal point `start` to `now`
+/// (THEORY.md, corrected form of the paper's eqs. `forward_slip`/`reverse_slip`):
+/// `w = |K_T(now) - K_T(start)|/(f K_N(now)) + (a_now - a_start)/2`.
+/// Not clamped: `w <= 0` means that edge still sticks.
+pub fn slip_zone_size(start: &EdgeState, now: &EdgeState, friction: f64, edge: Edge) -> f64 {
+    let i = edge as usize;
+    (now.shear_intensity[i] - start.shear_intensity[i]).abs() / (friction * now.normal_intensity)
+        + 0.5 * (now.half_width - start.half_width)
+}
+
+/// Stick zone implied by slip-zone sizes `[w_left, w_right]` in a contact of half-width a.
+pub fn stick_zone_from_slip(half_width: f64, slip: [f64; 2]) -> StickZone {
+    StickZone {
+        left: -(half_width - slip[0].max(0.0)),
+        right: half_width - slip[1].max(0.0),
+    }
+}
+
+/// The asymptotic description of a steady in-phase cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AsymptoticSteady {
+    /// Edge quantities at the first and second points as given.
+    pub edges: [EdgeState; 2],
+    /// `P_K = P0 - dS/(2f)` at `[left, right]` edges (paper, section "Asymptotic representation").
+    pub stick_load: [f64; 2],
+    /// Permanent stick zone estimate `[-a(P_K left), a(P_K right)]`.
+    pub stick_zone: StickZone,
+    /// Slip-zone sizes `w` at the first and second points as given, `[left, right]` each, from
+    /// [`slip_zone_size`] over the half-cycle that ends there.
+    pub slip_zones: [[f64; 2]; 2],
+}
+
+/// Evaluates the asymptotic description of the cycle.
+pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
+    let f = contact.friction.value();
+    let (first, second) = cycle.as_given();
+    let edges = [
+        EdgeState::at(contact, &first)?,
+        EdgeState::at(contact, &second)?,
+    ];
+    // Ranges from the end of smaller Q to the end of larger Q.
+    let (lo, hi) = if cycle.swapped {
+        (edges[1], edges[0])
+    } else {
+        (edges[0], edges[1])
+    };
+    let p0 = cycle.mean_normal();
+    let mut stick_load = [0.0; 2];
+    let mut ends = [0.0; 2];
+    for edge in [Edge::Left, Edge::Right] {
+        let i = edge as usize;
+        let p_k = p0 - (hi.equivalent_shear[i] - lo.equivalent_shear[i]) / (2.0 * f);
+        if !(p_k > 0.0) {
+            return Err(Error::AsymptoticBreakdown {
+                edge: edge.name(),
+                p_k,
+            });
+        }
+        stick_load[i] = p_k;
+        ends[i] = contact.half_width(p_k)?;
+    }
+    let slip_at = |start: &EdgeState, now: &EdgeState| {
+        [Edge::Left, Edge::Right].map(|e| slip_zone_size(start, now, f, e))
+    };
+    Ok(AsymptoticSteady {
+        edges,
+        stick_load,
+        stick_zone: StickZone {
+            left: -ends[0],
+            right: ends[1],
+        },
+        slip_zones: [slip_at(&edges[1], &edges[0]), slip_at(&edges[0], &edges[1])],
+    })
+}

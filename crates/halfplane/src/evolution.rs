@@ -1,0 +1,217 @@
+//! Exact evolution of the stick zone along the steady in-phase cycle (beyond the paper).
+//!
+//! At a point X of a half-cycle, the stick-zone equations hold for the partial path from the last
+//! reversal point to X, labelled by Q (THEORY.md "Slip zones along the cycle, exactly"): on the
+//! half where Q rises, X replaces point 2; where Q falls, X replaces point 1. The zone found is
+//! valid while it lies inside `min(a_start, a_X)`; while it covers the contact the contact sticks.
+
+use crate::asymptotic::{self, Edge, EdgeState};
+use crate::error::{Error, Result};
+use crate::load::{Cycle, LoadPoint};
+use crate::normal::Contact;
+use crate::steady::{self, Regime, Segment, SteadyOptions, StickZone};
+
+/// What the contact does at a point of the cycle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointState {
+    /// No slip anywhere (the stick zone is the whole current contact).
+    FullStick,
+    /// Slip at both edges: the exact partial-path result applies.
+    PartialSlip,
+    /// The two-edge relation puts only one edge in slip. The partial-path equations assume slip at
+    /// both edges, so the slipping edge's boundary shown is approximate here; use
+    /// `halfplane march` for the exact value.
+    OneEdgeSlip {
+        /// The edge that slips.
+        slipping: Edge,
+    },
+}
+
+/// The state at one point of a half-cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EvolutionPoint {
+    /// 1: from the first point as given to the second; 2: back.
+    pub half: u8,
+    /// Fraction of the way along the half, 0 to 1.
+    pub fraction: f64,
+    /// The load at this point.
+    pub load: LoadPoint,
+    /// Contact half-width a_X.
+    pub half_width: f64,
+    /// What the contact does.
+    pub state: PointState,
+    /// Stick zone (the whole contact in full stick).
+    pub stick_zone: StickZone,
+    /// The asymptotic estimate, from the corrected slip-zone formulas.
+    pub asymptotic_stick_zone: StickZone,
+}
+
+/// A condition that limits the exact result.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum EvolutionWarning {
+    /// The stick boundary at `edge` moved outwards between two slipping points of a half: slip
+    /// zones do not grow monotonically, so the partial-path relation (which assumes they do) is not
+    /// exact there. Use `halfplane march`.
+    NonMonotoneSlip {
+        /// Half (1 or 2).
+        half: u8,
+        /// Edge.
+        edge: Edge,
+        /// Fraction where it happened.
+        fraction: f64,
+    },
+    /// Some points have slip at one edge only (see [`PointState::OneEdgeSlip`]).
+    OneEdgeSlip {
+        /// Half (1 or 2).
+        half: u8,
+        /// Number of such points.
+        count: usize,
+    },
+}
+
+/// The stick zone along the cycle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Evolution {
+    /// The regime of the steady state.
+    pub regime: Regime,
+    /// Points of half 1 then half 2.
+    pub points: Vec<EvolutionPoint>,
+    /// Conditions that limit the result (empty when it is exact throughout).
+    pub warnings: Vec<EvolutionWarning>,
+}
+
+/// Evaluates the stick zone at `points_per_half` (>= 2) evenly spaced points of each half-cycle,
+/// ends included. Needs the steady state to be partial slip or full stick.
+pub fn evolve(
+    contact: &Contact,
+    cycle: &Cycle,
+    points_per_half: usize,
+    options: &SteadyOptions,
+) -> Result<Evolution> {
+    if points_per_half < 2 {
+        return Err(Error::InvalidInput {
+            field: "points".into(),
+            value: points_per_half as f64,
+            valid: "a whole number >= 2 (points per half-cycle, ends included)",
+        });
+    }
+    let steady = steady::analyse(contact, cycle, options)?;
+    let (first, second) = cycle.as_given();
+    if let Regime::GrossSliding { point } = steady.regime {
+        let p = if point == steady::GivenPoint::First {
+            first
+        } else {
+            second
+        };
+        return Err(Error::GrossSliding {
+            point: if point == steady::GivenPoint::First {
+                "first"
+            } else {
+                "second"
+            },
+            shear: p.shear.abs(),
+            limit: contact.friction.value() * p.normal,
+        });
+    }
+    let f = contact.friction.value();
+    let mut points = Vec::with_capacity(2 * points_per_half);
+    let mut warnings = Vec::new();
+    for (half, start, end) in [(1u8, first, second), (2u8, second, first)] {
+        let start_edges = EdgeState::at(contact, &start)?;
+        let rising = end.shear >= start.shear;
+        let mut guess = None;
+        let mut previous: Option<StickZone> = None;
+        let mut one_edge = 0;
+        for j in 0..points_per_half {
+            let fraction = j as f64 / (points_per_half - 1) as f64;
+            let load = start.lerp(&end, fraction);
+            let now = EdgeState::at(contact, &load)?;
+            let a_x = now.half_width;
+            let whole = StickZone {
+                left: -a_x,
+                right: a_x,
+            };
+            let (mut state, mut zone) = (PointState::FullStick, whole);
+            if steady.regime == Regime::PartialSlip && j > 0 {
+                let segment = if rising {
+                    Segment::between(&start, &load)
+                } else {
+                    Segment::between(&load, &start)
+                };
+                let (z, _) = steady::stick_zone(contact, &segment, guess, options)?;
+                guess = Some((z.half_width(), z.eccentricity()));
+                let limit = start_edges.half_width.min(a_x);
+                let (left_slips, right_slips) = (-z.left < limit, z.right < limit);
+                (state, zone) = match (left_slips, right_slips) {
+                    (true, true) => (PointState::PartialSlip, z),
+                    (false, false) => (PointState::FullStick, whole),
+                    (true, false) => (
+                        PointState::OneEdgeSlip {
+                            slipping: Edge::Left,
+                        },
+                        StickZone {
+                            left: z.left,
+                            right: a_x,
+                        },
+                    ),
+                    (false, true) => (
+                        PointState::OneEdgeSlip {
+                            slipping: Edge::Right,
+                        },
+                        StickZone {
+                            left: -a_x,
+                            right: z.right,
+                        },
+                    ),
+                };
+                if matches!(state, PointState::OneEdgeSlip { .. }) {
+                    one_edge += 1;
+                }
+            }
+            if let (Some(p), PointState::PartialSlip) = (previous, state) {
+                for (edge, moved_out) in [
+                    (Edge::Left, zone.left < p.left - 1e-12 * a_x),
+                    (Edge::Right, zone.right > p.right + 1e-12 * a_x),
+                ] {
+                    if moved_out {
+                        warnings.push(EvolutionWarning::NonMonotoneSlip {
+                            half,
+                            edge,
+                            fraction,
+                        });
+                    }
+                }
+            }
+            if state != PointState::FullStick {
+                previous = Some(zone);
+            }
+            let slip = [Edge::Left, Edge::Right]
+                .map(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
+            let asymptotic_stick_zone = if steady.regime == Regime::PartialSlip {
+                asymptotic::stick_zone_from_slip(a_x, slip)
+            } else {
+                whole
+            };
+            points.push(EvolutionPoint {
+                half,
+                fraction,
+                load,
+                half_width: a_x,
+                state,
+                stick_zone: zone,
+                asymptotic_stick_zone,
+            });
+        }
+        if one_edge > 0 {
+            warnings.push(EvolutionWarning::OneEdgeSlip {
+                half,
+                count: one_edge,
+            });
+        }
+    }
+    Ok(Evolution {
+        regime: steady.regime,
+        points,
+        warnings,
+    })
+}

@@ -1,0 +1,367 @@
+//! Steady-state analysis of an in-phase cycle (the paper's main result): regime, permanent stick
+//! zone `[-m, n]` and slip-zone extents.
+//!
+//! Conventions (THEORY.md): point 1 is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`,
+//! `dsigma = sigma1 - sigma2`, `d = (m + n)/2` (half-width), `e = (n - m)/2` (eccentricity,
+//! positive to the right, x increasing in the direction of positive Q).
+
+use crate::closed_form;
+use crate::error::{Error, Result};
+use crate::load::{Cycle, LoadPoint};
+use crate::normal::Contact;
+use crate::profile::Shape;
+use std::f64::consts::PI;
+
+/// How the stick zone is found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Closed form for Hertz, the implicit equations otherwise (default).
+    #[default]
+    Auto,
+    /// Always the two implicit equations (useful to check the closed form).
+    Implicit,
+}
+
+/// Solver parameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyOptions {
+    /// Stick-zone method; default [`Method::Auto`].
+    pub method: Method,
+    /// Newton stops when both steps are below `tolerance * d`; default 1e-14 (the integrals are
+    /// exact to rounding, so the answer is limited by rounding, about 1e-15 relative).
+    pub tolerance: f64,
+    /// Newton iteration cap; default 60 (3-6 are typical).
+    pub max_iterations: usize,
+}
+
+impl Default for SteadyOptions {
+    fn default() -> Self {
+        Self {
+            method: Method::Auto,
+            tolerance: 1e-14,
+            max_iterations: 60,
+        }
+    }
+}
+
+/// A stick zone `[left, right] = [-m, n]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StickZone {
+    /// Left end, `-m`.
+    pub left: f64,
+    /// Right end, `n`.
+    pub right: f64,
+}
+
+impl StickZone {
+    /// Builds `[-m, n]` from half-width d and eccentricity e: `n = d + e`, `-m = -d + e`.
+    pub fn from_half_width(d: f64, e: f64) -> Self {
+        Self {
+            left: e - d,
+            right: e + d,
+        }
+    }
+
+    /// `d = (m + n)/2`.
+    pub fn half_width(&self) -> f64 {
+        0.5 * (self.right - self.left)
+    }
+
+    /// `e = (n - m)/2`.
+    pub fn eccentricity(&self) -> f64 {
+        0.5 * (self.right + self.left)
+    }
+}
+
+/// Which of the caller's two points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GivenPoint {
+    /// The first point as given.
+    First,
+    /// The second point as given.
+    Second,
+}
+
+/// The regime of the steady state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Regime {
+    /// `|Q| >= f P` at an end of the cycle: rigid sliding, no steady partial-slip state.
+    GrossSliding {
+        /// The end that slides (the first one found, as given).
+        point: GivenPoint,
+    },
+    /// Eq. (1) holds: the whole contact sticks in the steady state.
+    FullStick,
+    /// A permanent stick zone with oscillating slip zones at both edges.
+    PartialSlip,
+}
+
+/// The figures the regime was decided from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Criteria {
+    /// `|Q|/P` at the first and second points as given (gross sliding when >= f).
+    pub shear_ratio: [f64; 2],
+    /// `(|dQ| + pi a_max |dsigma|/4)/|dP|` (eq. 1; full stick when <= f). Infinite when dP = 0.
+    pub full_stick_ratio: f64,
+    /// `pi a_max |dsigma|/4`, the bulk-tension term compared with dQ for slip reversal.
+    pub bulk_term: f64,
+    /// f.
+    pub friction: f64,
+}
+
+/// Slip-zone extents (lengths from the contact edge to the stick zone) at both ends of the cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlipZones {
+    /// Left edge `a_i - m` at the first and second points as given.
+    pub left: [f64; 2],
+    /// Right edge `a_i - n` at the first and second points as given.
+    pub right: [f64; 2],
+}
+
+/// Result of [`analyse`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SteadyState {
+    /// The cycle, labelled by Q.
+    pub cycle: Cycle,
+    /// Contact half-widths at the first and second points as given.
+    pub half_width: [f64; 2],
+    /// The regime.
+    pub regime: Regime,
+    /// What decided it.
+    pub criteria: Criteria,
+    /// `[-m, n]`: the permanent stick zone in partial slip; the smaller contact in full stick;
+    /// `None` in gross sliding.
+    pub stick_zone: Option<StickZone>,
+    /// Slip-zone extents (zero in full stick); `None` in gross sliding.
+    pub slip_zones: Option<SlipZones>,
+    /// Newton iterations used (0 for a closed form).
+    pub iterations: usize,
+}
+
+/// The data of a load segment that the stick-zone equations need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// `P1 + P2`.
+    pub normal_sum: f64,
+    /// `dQ = Q2 - Q1 >= 0`.
+    pub shear_range: f64,
+    /// `dsigma = sigma1 - sigma2`.
+    pub bulk_range: f64,
+}
+
+impl Segment {
+    /// The segment between `low` (smaller Q) and `high`.
+    pub fn between(low: &LoadPoint, high: &LoadPoint) -> Self {
+        Self {
+            normal_sum: low.normal + high.normal,
+            shear_range: high.shear - low.shear,
+            bulk_range: low.bulk - high.bulk,
+        }
+    }
+}
+
+/// Analyses the steady state of the in-phase cycle: regime, stick zone and slip zones.
+///
+/// Errors: [`Error::SlipReversal`] when bulk tension would reverse slip at one edge and
+/// [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the smaller contact (both
+/// outside the paper's assumptions: use the time-marching solver).
+pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Result<SteadyState> {
+    let f = contact.friction.value();
+    let (first, second) = cycle.as_given();
+    let half_width = [
+        contact.half_width(first.normal)?,
+        contact.half_width(second.normal)?,
+    ];
+    let a_max = half_width[0].max(half_width[1]);
+    let a_min = half_width[0].min(half_width[1]);
+    let d_p = cycle.normal_range().abs();
+    let d_q = cycle.shear_range();
+    let bulk_term = PI * a_max * cycle.bulk_range().abs() / 4.0;
+    let criteria = Criteria {
+        shear_ratio: [
+            first.shear.abs() / first.normal,
+            second.shear.abs() / second.normal,
+        ],
+        full_stick_ratio: if d_p > 0.0 {
+            (d_q + bulk_term) / d_p
+        } else {
+            f64::INFINITY
+        },
+        bulk_term,
+        friction: f,
+    };
+    let mut state = SteadyState {
+        cycle: *cycle,
+        half_width,
+        regime: Regime::PartialSlip,
+        criteria,
+        stick_zone: None,
+        slip_zones: None,
+        iterations: 0,
+    };
+    if let Some(i) = criteria.shear_ratio.iter().position(|&r| r >= f) {
+        state.regime = Regime::GrossSliding {
+            point: if i == 0 {
+                GivenPoint::First
+            } else {
+                GivenPoint::Second
+            },
+        };
+        return Ok(state);
+    }
+    // Eq. (1) with a = a_max, written without dividing by dP; a constant load sticks.
+    if d_q + bulk_term <= f * d_p || (d_q == 0.0 && bulk_term == 0.0) {
+        state.regime = Regime::FullStick;
+        state.stick_zone = Some(StickZone {
+            left: -a_min,
+            right: a_min,
+        });
+        state.slip_zones = Some(SlipZones {
+            left: [0.0; 2],
+            right: [0.0; 2],
+        });
+        return Ok(state);
+    }
+    if d_q <= bulk_term {
+        return Err(Error::SlipReversal {
+            shear_range: d_q,
+            bulk_term,
+        });
+    }
+    let segment = Segment::between(&cycle.low, &cycle.high);
+    let (zone, iterations) = stick_zone(contact, &segment, None, options)?;
+    let (m, n) = (-zone.left, zone.right);
+    if !(m > 0.0 && n > 0.0 && m < a_min && n < a_min) {
+        return Err(Error::StickZoneOutsideContact {
+            left: zone.left,
+            right: zone.right,
+            smaller_half_width: a_min,
+        });
+    }
+    state.stick_zone = Some(zone);
+    state.slip_zones = Some(SlipZones {
+        left: half_width.map(|a| a - m),
+        right: half_width.map(|a| a - n),
+    });
+    state.iterations = iterations;
+    Ok(state)
+}
+
+/// Solves the two stick-zone equations for a load segment (THEORY.md "Permanent stick zone";
+/// paper eqs. `consistency_cond` and `tangential_equilibrium`, with `xi = e + d cos(theta)`):
+///
+/// - `integral_0^pi g'(e + d cos t) dt = -pi A dsigma/(8 f)`
+/// - `f(P1 + P2) - dQ - pi e dsigma/4 = (2f/A) integral_0^pi xi g'(xi) dt`
+///
+/// Hertz (with [`Method::Auto`]) uses the closed form ([`closed_form::hertz_stick_zone`]).
+/// Otherwise Newton's method with the exact Jacobian and a backtracking line search, started
+/// from the symmetric solution `d = a(P_K)`, `P_K = (P1 + P2)/2 - dQ/(2f)`, `e = 0` (exact when
+/// dsigma = 0), or from `guess` = (d, e). Returns the zone and the iterations used.
+pub fn stick_zone(
+    contact: &Contact,
+    segment: &Segment,
+    guess: Option<(f64, f64)>,
+    options: &SteadyOptions,
+) -> Result<(StickZone, usize)> {
+    let f = contact.friction.value();
+    let a_comp = contact.compliance().value();
+    let Segment {
+        normal_sum,
+        shear_range,
+        bulk_range,
+    } = *segment;
+    if let (Method::Auto, Shape::Hertz { radius }) = (options.method, contact.profile.shape()) {
+        let (d, e) =
+            closed_form::hertz_stick_zone(a_comp, *radius, f, normal_sum, shear_range, bulk_range)
+                .ok_or(Error::StickZoneOutsideContact {
+                    left: 0.0,
+                    right: 0.0,
+                    smaller_half_width: 0.0,
+                })?;
+        return Ok((StickZone::from_half_width(d, e), 0));
+    }
+    let residual = |d: f64, e: f64| -> Result<([f64; 2], [[f64; 2]; 2])> {
+        let s = contact.profile.stick_integrals(d, e)?;
+        let r = [
+            s.j0 + PI * a_comp * bulk_range / (8.0 * f),
+            2.0 * f / a_comp * s.j1 + PI * e * bulk_range / 4.0 - f * normal_sum + shear_range,
+        ];
+        let jac = [
+            [s.j0_d, s.j0_e],
+            [
+                2.0 * f / a_comp * s.j1_d,
+                2.0 * f / a_comp * s.j1_e + PI * bulk_range / 4.0,
+            ],
+        ];
+        Ok((r, jac))
+    };
+    let (mut d, mut e) = match guess {
+        Some(g) => g,
+        None => {
+            let p_k = 0.5 * normal_sum - shear_range / (2.0 * f);
+            if p_k <= 0.0 {
+                return Err(Error::StickZoneOutsideContact {
+                    left: 0.0,
+                    right: 0.0,
+                    smaller_half_width: 0.0,
+                });
+            }
+            (contact.half_width(p_k)?, 0.0)
+        }
+    };
+    // Residual scales: the consistency equation is a slope integral (compare with pi g'(d)),
+    // equilibrium a force (compare with f (P1 + P2)).
+    let s1 = PI * contact.profile.slope(d)?.abs().max(f64::MIN_POSITIVE);
+    let s2 = f * normal_sum;
+    let norm = |r: [f64; 2]| (r[0] / s1).hypot(r[1] / s2);
+    let (mut r, mut jac) = residual(d, e)?;
+    let mut last_step = f64::INFINITY;
+    for iteration in 1..=options.max_iterations {
+        let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
+        let step_d = -(jac[1][1] * r[0] - jac[0][1] * r[1]) / det;
+        let step_e = -(-jac[1][0] * r[0] + jac[0][0] * r[1]) / det;
+        if !(step_d.is_finite() && step_e.is_finite()) {
+            break;
+        }
+        let current = norm(r);
+        let mut lambda = 1.0;
+        let mut accepted = None;
+        for _ in 0..40 {
+            let (dn, en) = (d + lambda * step_d, e + lambda * step_e);
+            if dn > 0.0 {
+                if let Ok((rn, jn)) = residual(dn, en) {
+                    if norm(rn) <= (1.0 - 1e-4 * lambda) * current || norm(rn) == 0.0 {
+                        accepted = Some((dn, en, rn, jn));
+                        break;
+                    }
+                }
+            }
+            lambda *= 0.5;
+        }
+        // Near the solution rounding can stop the residual decreasing: accept a tiny full step.
+        let converging = step_d.abs().max(step_e.abs()) <= 1e3 * options.tolerance * d;
+        match accepted {
+            Some((dn, en, rn, jn)) => {
+                last_step = (dn - d).abs().max((en - e).abs()) / dn;
+                d = dn;
+                e = en;
+                r = rn;
+                jac = jn;
+            }
+            None if converging => {
+                d += step_d;
+                e += step_e;
+                return Ok((StickZone::from_half_width(d, e), iteration));
+            }
+            None => break,
+        }
+        if last_step <= options.tolerance || current == 0.0 {
+            return Ok((StickZone::from_half_width(d, e), iteration));
+        }
+    }
+    Err(Error::NoConvergence {
+        what: "stick-zone equations",
+        iterations: options.max_iterations,
+        last_step,
+    })
+}
