@@ -1,0 +1,259 @@
+//! The case file: raw TOML is parsed first, then resolved into validated library values. Every
+//! error names the field (as the file spells it) and what would be valid.
+
+use anyhow::{anyhow, bail, Context, Result};
+use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCase {
+    material: Option<RawMaterial>,
+    friction: Option<RawFriction>,
+    profile: Option<RawProfile>,
+    cycle: Option<RawCycle>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMaterial {
+    youngs_modulus: Option<f64>,
+    poisson_ratio: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFriction {
+    coefficient: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawProfile {
+    kind: Option<String>,
+    radius: Option<f64>,
+    flat_half_width: Option<f64>,
+    coefficient: Option<f64>,
+    exponent: Option<f64>,
+    file: Option<String>,
+    kinks: Option<Vec<f64>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCycle {
+    point1: Option<RawPoint>,
+    point2: Option<RawPoint>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPoint {
+    normal: Option<f64>,
+    shear: Option<f64>,
+    bulk: Option<f64>,
+}
+
+/// A resolved case: a validated contact and, when the file has one, a cycle.
+#[derive(Debug, Clone)]
+pub struct Case {
+    pub contact: Contact,
+    pub cycle: Option<Cycle>,
+}
+
+impl Case {
+    /// The cycle, or an error saying the `[cycle]` section is needed.
+    pub fn cycle(&self) -> Result<Cycle> {
+        self.cycle.ok_or_else(|| anyhow!("missing section [cycle]: give point1 and point2, e.g. point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}"))
+    }
+}
+
+fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
+    value.ok_or_else(|| anyhow!("missing field {field}: give {what}"))
+}
+
+/// Reads and resolves a case file.
+pub fn load(path: &Path) -> Result<Case> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read case file {}", path.display()))?;
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    parse(&text, &dir).with_context(|| format!("in case file {}", path.display()))
+}
+
+/// Resolves case text; relative paths are taken from `dir`.
+pub fn parse(text: &str, dir: &Path) -> Result<Case> {
+    let raw: RawCase = toml::from_str(text).map_err(|e| anyhow!("{}", e.to_string().trim_end()))?;
+    let m = raw.material.ok_or_else(|| {
+        anyhow!("missing section [material]: give youngs_modulus and poisson_ratio")
+    })?;
+    let material = Material::new(
+        required(
+            m.youngs_modulus,
+            "material.youngs_modulus",
+            "Young's modulus E > 0 (MPa in N-mm-MPa units)",
+        )?,
+        required(
+            m.poisson_ratio,
+            "material.poisson_ratio",
+            "Poisson's ratio with 0 <= nu < 0.5",
+        )?,
+    )?;
+    let fr = raw
+        .friction
+        .ok_or_else(|| anyhow!("missing section [friction]: give coefficient = f > 0"))?;
+    let friction = Friction::new(required(
+        fr.coefficient,
+        "friction.coefficient",
+        "the Coulomb friction coefficient f > 0",
+    )?)?;
+    let p = raw.profile.ok_or_else(|| anyhow!("missing section [profile]: give kind = \"hertz\" | \"flat-rounded\" | \"power-law\" | \"tabulated\" and its parameters"))?;
+    let profile = resolve_profile(p, dir)?;
+    let cycle = match raw.cycle {
+        None => None,
+        Some(c) => {
+            let point = |raw: Option<RawPoint>, name: &str| -> Result<LoadPoint> {
+                let r = raw.ok_or_else(|| anyhow!("missing field cycle.{name}: give {{ normal = P > 0, shear = Q, bulk = sigma }}"))?;
+                let field = format!("cycle.{name}");
+                Ok(LoadPoint::new(
+                    &field,
+                    required(
+                        r.normal,
+                        &format!("{field}.normal"),
+                        "the normal load P > 0 (N/mm)",
+                    )?,
+                    required(
+                        r.shear,
+                        &format!("{field}.shear"),
+                        "the shear load Q (N/mm)",
+                    )?,
+                    r.bulk.unwrap_or(0.0),
+                )?)
+            };
+            Some(Cycle::new(
+                point(c.point1, "point1")?,
+                point(c.point2, "point2")?,
+            ))
+        }
+    };
+    Ok(Case {
+        contact: Contact::new(profile, material, friction),
+        cycle,
+    })
+}
+
+fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
+    let kind = p.kind.clone().ok_or_else(|| anyhow!("missing field profile.kind: give one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""))?;
+    let used: &[&str] = match kind.as_str() {
+        "hertz" => &["radius"],
+        "flat-rounded" => &["radius", "flat_half_width"],
+        "power-law" => &["coefficient", "exponent"],
+        "tabulated" => &["file", "kinks"],
+        other => bail!("invalid profile.kind = \"{other}\": must be one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""),
+    };
+    let given = [
+        ("radius", p.radius.is_some()),
+        ("flat_half_width", p.flat_half_width.is_some()),
+        ("coefficient", p.coefficient.is_some()),
+        ("exponent", p.exponent.is_some()),
+        ("file", p.file.is_some()),
+        ("kinks", p.kinks.is_some()),
+    ];
+    for (name, present) in given {
+        if present && !used.contains(&name) {
+            bail!(
+                "profile.{name} is not used by kind \"{kind}\" (it takes: {})",
+                used.join(", ")
+            );
+        }
+    }
+    Ok(match kind.as_str() {
+        "hertz" => Profile::hertz(required(
+            p.radius,
+            "profile.radius",
+            "the relative radius of curvature R > 0 (mm)",
+        )?)?,
+        "flat-rounded" => Profile::flat_rounded(
+            required(
+                p.flat_half_width,
+                "profile.flat_half_width",
+                "the flat half-width b >= 0 (mm)",
+            )?,
+            required(p.radius, "profile.radius", "the edge radius R > 0 (mm)")?,
+        )?,
+        "power-law" => Profile::power_law(
+            required(p.coefficient, "profile.coefficient", "B > 0 in g = B|x|^k")?,
+            required(p.exponent, "profile.exponent", "k >= 1 in g = B|x|^k")?,
+        )?,
+        _ => {
+            let file = p.file.ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file"))?;
+            let path = dir.join(&file);
+            let (x, g, lines) = read_table(&path)?;
+            Profile::tabulated(x, g, p.kinks.unwrap_or_default()).map_err(|e| match e {
+                halfplane::Error::InvalidTable { row, problem }
+                    if row >= 1 && row <= lines.len() =>
+                {
+                    anyhow!(
+                        "profile.file {}, line {}: {problem}",
+                        path.display(),
+                        lines[row - 1]
+                    )
+                }
+                other => anyhow!("profile.file {}: {other}", path.display()),
+            })?
+        }
+    })
+}
+
+/// Reads a CSV with header `x,g`; blank lines and lines starting with `#` are skipped. Returns the
+/// columns and the file line of each data row.
+pub fn read_table(path: &PathBuf) -> Result<(Vec<f64>, Vec<f64>, Vec<usize>)> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read profile.file {}", path.display()))?;
+    let mut rows = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let (_, header) = rows.next().ok_or_else(|| {
+        anyhow!(
+            "profile.file {} is empty: it needs a header x,g and rows",
+            path.display()
+        )
+    })?;
+    let names: Vec<String> = header
+        .split(',')
+        .map(|s| s.trim().to_ascii_lowercase())
+        .collect();
+    if names != ["x", "g"] {
+        bail!(
+            "profile.file {}, line 1: header is \"{}\", expected \"x,g\"",
+            path.display(),
+            header.trim()
+        );
+    }
+    let (mut x, mut g, mut lines) = (Vec::new(), Vec::new(), Vec::new());
+    for (i, line) in rows {
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        let parse = |s: &str, col: &str| -> Result<f64> {
+            s.parse::<f64>().map_err(|_| {
+                anyhow!(
+                    "profile.file {}, line {}: {col} = \"{s}\" is not a number",
+                    path.display(),
+                    i + 1
+                )
+            })
+        };
+        if cells.len() != 2 {
+            bail!(
+                "profile.file {}, line {}: expected 2 columns (x,g), found {}",
+                path.display(),
+                i + 1,
+                cells.len()
+            );
+        }
+        x.push(parse(cells[0], "x")?);
+        g.push(parse(cells[1], "g")?);
+        lines.push(i + 1);
+    }
+    Ok((x, g, lines))
+}
