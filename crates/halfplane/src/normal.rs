@@ -133,10 +133,13 @@ impl Contact {
     /// Contact pressure at `x` for the contact of half-width `a` (THEORY.md "Normal problem"):
     /// `p(x) = (sqrt(a^2 - x^2)/(pi A)) PV integral g'(xi)/(sqrt(a^2 - xi^2)(xi - x)) dxi`.
     /// Hertz uses its closed form. Otherwise the principal value is removed by subtracting
-    /// `g'(x)` (the PV integral of the bare kernel vanishes inside the contact), leaving the
-    /// regular integral `integral_0^pi (g'(a cos t) - g'(x))/(a cos t - x) dt`, split at x and at
-    /// the kinks and summed by 20-point Gauss-Legendre per piece (exact to rounding for the
-    /// piecewise-quadratic slopes; for a non-integer power law near x = 0, about 1e-6 relative).
+    /// `g'(x)` (the PV integral of the bare kernel vanishes inside the contact), leaving
+    /// `integral_0^pi (g'(a cos t) - g'(x))/(a cos t - x) dt`, split at x and wherever the slope formula changes. On a
+    /// piece that does not hold x, the piece's own slope formula continued to x, `c`, is
+    /// subtracted too, so the remaining integrand is regular even when x is close to the piece,
+    /// and `(c - g'(x)) integral dt/(a cos t - x)` is added in closed form. Each piece is summed
+    /// by 20-point Gauss-Legendre: exact to rounding for piecewise-polynomial slopes; for a
+    /// non-integer power law near x = 0 (no continuation across 0) about 1e-6 relative.
     pub fn pressure(&self, half_width: f64, x: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
         let a = half_width;
@@ -149,26 +152,47 @@ impl Contact {
         }
         let gx = self.profile.slope(x)?;
         self.profile.slope(a)?;
-        let mut cuts = vec![0.0, PI, (x / a).acos()];
-        for k in self.profile.kinks() {
-            for s in [k, -k] {
-                if s.abs() < a {
-                    cuts.push((s / a).acos());
-                }
+        let root = (a * a - x * x).sqrt();
+        // integral dt/(a cos t - x) = L(t) with tan(t/2) substitution; L(pi) = 0.
+        let k = ((a - x) / (a + x)).sqrt();
+        let log_kernel = |t: f64| {
+            if t >= PI {
+                0.0
+            } else {
+                let u = (0.5 * t).tan();
+                ((k + u) / (k - u)).abs().ln() / root
             }
-        }
+        };
+        let theta_x = (x / a).acos();
+        let mut cuts = vec![0.0, PI, theta_x];
+        cuts.extend(
+            self.profile
+                .breaks_within(-a, a)
+                .into_iter()
+                .map(|s| (s / a).acos()),
+        );
         cuts.sort_by(f64::total_cmp);
         let mut sum = 0.0;
         for w in cuts.windows(2) {
             if w[1] > w[0] {
+                let inside = a * (0.5 * (w[0] + w[1])).cos();
+                // Next to x the piece is x's own: no continuation (and L is infinite at x).
+                let c = if w[0] == theta_x || w[1] == theta_x {
+                    gx
+                } else {
+                    self.profile.slope_branch(inside, x).unwrap_or(gx)
+                };
                 let [v] = gauss_legendre(w[0], w[1], |t| {
                     let xi = a * t.cos();
-                    [(self.profile.slope(xi).unwrap_or(gx) - gx) / (xi - x)]
+                    [(self.profile.slope(xi).unwrap_or(c) - c) / (xi - x)]
                 });
                 sum += v;
+                if c != gx {
+                    sum += (c - gx) * (log_kernel(w[1]) - log_kernel(w[0]));
+                }
             }
         }
-        Ok(((a * a - x * x).sqrt() / (PI * a_comp) * sum).max(0.0))
+        Ok((root / (PI * a_comp) * sum).max(0.0))
     }
 
     /// Normal edge intensity `K_N = (1/pi) sqrt(2/a) dP/da`, with `p ~ K_N sqrt(s)` at distance s

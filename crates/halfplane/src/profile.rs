@@ -311,6 +311,29 @@ impl Profile {
         }
     }
 
+    /// Every x in `(lo, hi)` where the slope formula changes: piece boundaries (spline knots and
+    /// kinks) or x = 0 for the power law.
+    pub(crate) fn breaks_within(&self, lo: f64, hi: f64) -> Vec<f64> {
+        match &self.slope {
+            Slope::Pieces(p) => p
+                .pieces
+                .iter()
+                .map(|q| q.start)
+                .filter(|&x| x > lo && x < hi)
+                .collect(),
+            Slope::Power(_) => [0.0].into_iter().filter(|&x| x > lo && x < hi).collect(),
+        }
+    }
+
+    /// The slope formula of the smooth piece containing `inside`, continued analytically to `at`
+    /// (`None` where no continuation exists: a non-integer power law across x = 0).
+    pub(crate) fn slope_branch(&self, inside: f64, at: f64) -> Option<f64> {
+        match &self.slope {
+            Slope::Pieces(p) => Some(p.pieces[p.index(inside)].eval(at)),
+            Slope::Power(p) => (inside.signum() == at.signum()).then(|| p.slope(at)),
+        }
+    }
+
     /// `J1(a, 0) = integral_0^pi a cos(t) g'(a cos t) dt` and its derivative in a: the contact law
     /// is `P = J1/A` (THEORY.md "Normal problem").
     pub(crate) fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
@@ -427,12 +450,14 @@ impl Pieces {
         }
     }
 
-    fn slope(&self, x: f64) -> f64 {
-        let i = self
-            .pieces
+    fn index(&self, x: f64) -> usize {
+        self.pieces
             .partition_point(|p| p.end < x)
-            .min(self.pieces.len() - 1);
-        self.pieces[i].eval(x)
+            .min(self.pieces.len() - 1)
+    }
+
+    fn slope(&self, x: f64) -> f64 {
+        self.pieces[self.index(x)].eval(x)
     }
 
     /// Exact J0, J1 and derivatives: on each piece the integrands are polynomials in cos(theta),

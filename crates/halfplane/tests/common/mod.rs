@@ -1,0 +1,83 @@
+//! Shared fixtures and an independent brute-force integrator for the tests.
+#![allow(dead_code)]
+
+use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
+
+/// THEORY.md's example material and friction.
+pub fn contact(profile: Profile) -> Contact {
+    Contact::new(
+        profile,
+        Material::new(200_000.0, 0.3).unwrap(),
+        Friction::new(0.6).unwrap(),
+    )
+}
+
+pub fn point(normal: f64, shear: f64, bulk: f64) -> LoadPoint {
+    LoadPoint::new("test", normal, shear, bulk).unwrap()
+}
+
+/// THEORY.md's checked cycle.
+pub fn theory_cycle() -> Cycle {
+    Cycle::new(point(1000.0, -250.0, -20.0), point(1400.0, 250.0, 20.0))
+}
+
+pub const RADIUS: f64 = 50.0;
+
+/// Tabulated samples of a profile function g on [0, end] with `n` intervals.
+pub fn sampled(g: impl Fn(f64) -> f64, end: f64, n: usize) -> (Vec<f64>, Vec<f64>) {
+    let x: Vec<f64> = (0..=n).map(|i| end * i as f64 / n as f64).collect();
+    let y = x.iter().map(|&x| g(x)).collect();
+    (x, y)
+}
+
+/// Composite 10-point Gauss-Legendre over [a, b] with `panels` equal panels; independent of the
+/// library's quadrature module. Callers put panel boundaries at kinks.
+pub fn integrate(a: f64, b: f64, panels: usize, f: impl Fn(f64) -> f64) -> f64 {
+    const X: [f64; 5] = [
+        0.148_874_338_981_631_2,
+        0.433_395_394_129_247_2,
+        0.679_409_568_299_024_4,
+        0.865_063_366_688_984_5,
+        0.973_906_528_517_171_7,
+    ];
+    const W: [f64; 5] = [
+        0.295_524_224_714_752_9,
+        0.269_266_719_309_996_4,
+        0.219_086_362_515_982_04,
+        0.149_451_349_150_580_6,
+        0.066_671_344_308_688_14,
+    ];
+    let h = (b - a) / panels as f64;
+    let mut sum = 0.0;
+    for i in 0..panels {
+        let mid = a + (i as f64 + 0.5) * h;
+        for (x, w) in X.iter().zip(W) {
+            sum += w * (f(mid - 0.5 * h * x) + f(mid + 0.5 * h * x));
+        }
+    }
+    0.5 * h * sum
+}
+
+pub fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// Like [`integrate`] but with panels graded geometrically (ratio 1/2, 60 levels) towards both
+/// ends, so endpoint singularities such as `(x - b) ln|x - b|` are resolved to ~1e-14.
+pub fn integrate_graded(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
+    let mid = 0.5 * (a + b);
+    let mut sum = 0.0;
+    for (end, towards) in [(a, mid), (b, mid)] {
+        let mut outer = towards;
+        for _ in 0..60 {
+            let inner = end + 0.5 * (outer - end);
+            sum += if end < towards {
+                integrate(inner, outer, 1, &f)
+            } else {
+                integrate(outer, inner, 1, &f)
+            };
+            outer = inner;
+        }
+    }
+    sum
+}
