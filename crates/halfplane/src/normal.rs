@@ -72,54 +72,62 @@ impl Contact {
             }
             _ => {}
         }
-        // Bracket [lo, hi] with P(lo) <= normal <= P(hi); P is increasing in a.
-        let (mut lo, mut hi) = match self.profile.shape() {
-            Shape::FlatRounded {
-                flat_half_width,
-                edge_radius,
-            } => {
-                let b = *flat_half_width;
-                (
-                    b,
-                    b + closed_form::hertz_half_width(a_comp, *edge_radius, normal),
-                )
+        // Bracket [lo, hi] with P(lo) <= normal <= P(hi) (P increases with a), and a first guess.
+        let (mut lo, mut hi, mut a) = match self.profile.moment_bracket(a_comp * normal) {
+            // Tabulated: the knot table gives a one-interval bracket; interpolate as if J1 ~ a^2.
+            Some(Ok([(a0, m0), (a1, m1)])) => {
+                let t = (a_comp * normal - m0) / (m1 - m0);
+                (a0, a1, (a0 * a0 + t * (a1 * a1 - a0 * a0)).sqrt())
             }
-            _ => (0.0, self.profile.extent()),
-        };
-        // Expand until the bracket holds the load (a tabulated profile cannot be extended).
-        loop {
-            let p_hi = self.load(hi)?;
-            if p_hi >= normal {
-                break;
-            }
-            if !self.profile.extent().is_infinite() {
-                // P grows at least like a^2 near the end of a convex table: a useful estimate.
-                let needed = hi * (normal / p_hi).sqrt();
+            Some(Err(needed)) => {
                 return Err(Error::BeyondTable {
                     what: "contact",
                     needed,
-                    table_end: hi,
-                });
+                    table_end: self.profile.extent(),
+                })
             }
-            lo = hi;
-            hi *= 2.0;
-        }
-        let mut a = 0.5 * (lo + hi);
+            None => {
+                let (lo, mut hi) = match self.profile.shape() {
+                    Shape::FlatRounded {
+                        flat_half_width,
+                        edge_radius,
+                    } => {
+                        let b = *flat_half_width;
+                        (
+                            b,
+                            b + closed_form::hertz_half_width(a_comp, *edge_radius, normal),
+                        )
+                    }
+                    _ => (0.0, 1.0),
+                };
+                let mut lo = lo;
+                while self.load(hi)? < normal {
+                    lo = hi;
+                    hi *= 2.0;
+                }
+                (lo, hi, 0.5 * (lo + hi))
+            }
+        };
         for _ in 0..200 {
             let (j1, j1_d) = self.profile.symmetric_moment(a)?;
             let residual = j1 / a_comp - normal;
+            let newton = a - residual * a_comp / j1_d;
+            // Converged steps are tested before the bracket: at the root the Newton point equals
+            // the bracket end just updated, and bisecting there would walk away from it.
+            if (newton - a).abs() <= 1e-15 * a {
+                return Ok(newton);
+            }
             if residual > 0.0 {
                 hi = a;
             } else {
                 lo = a;
             }
-            let mut next = a - residual * a_comp / j1_d;
-            if !(next > lo && next < hi) || !next.is_finite() {
-                next = 0.5 * (lo + hi);
-            }
-            let step = (next - a).abs();
-            a = next;
-            if step <= 1e-15 * a || hi - lo <= 1e-15 * hi {
+            a = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if hi - lo <= 1e-15 * hi {
                 return Ok(a);
             }
         }

@@ -143,7 +143,9 @@ impl Profile {
                 valid: "a finite number with 1 <= k <= 64",
             });
         }
-        let rule = Rule::jacobi(16, exponent - 1.0)?;
+        // R(t) in the integrand is analytic with its nearest singularity at t = 2, so the error
+        // falls like 5.8^(-2n): 12 nodes are below rounding.
+        let rule = Rule::jacobi(12, exponent - 1.0)?;
         Ok(Self {
             shape: Shape::PowerLaw {
                 coefficient,
@@ -217,9 +219,14 @@ impl Profile {
         kinks.sort_by(f64::total_cmp);
         kinks.dedup();
         let mut cuts = vec![0usize];
-        for &k in &kinks {
-            match x.iter().position(|&xi| xi == k) {
+        for k in kinks.iter_mut() {
+            let k_given = *k;
+            // Kinks are matched to a row within 1e-9 of the table's length (decimal inputs such
+            // as 0.3 need not be bit-equal to a computed abscissa).
+            let tol = 1e-9 * x[x.len() - 1];
+            match x.iter().position(|&xi| (xi - k_given).abs() <= tol) {
                 Some(i) if i + 1 < x.len() => {
+                    *k = x[i];
                     if i > 0 {
                         cuts.push(i);
                     }
@@ -227,7 +234,7 @@ impl Profile {
                 _ => {
                     return Err(Error::InvalidInput {
                         field: "profile.kinks".into(),
-                        value: k,
+                        value: k_given,
                         valid: "one of the tabulated x values, below the last one",
                     })
                 }
@@ -254,7 +261,13 @@ impl Profile {
         }
         let mut breaks: Vec<f64> = kinks.clone();
         breaks.retain(|&k| k > 0.0);
-        let slope = Pieces::symmetric(pieces, &breaks);
+        let mut slope = Pieces::symmetric(pieces, &breaks);
+        slope.knot_moments = slope
+            .pieces
+            .iter()
+            .filter(|p| p.end > 0.0)
+            .map(|p| slope.symmetric_moment(p.end).map(|(j1, _)| (p.end, j1)))
+            .collect::<Result<_>>()?;
         Ok(Self {
             shape: Shape::Tabulated { x, g, kinks },
             slope: Slope::Pieces(slope),
@@ -325,6 +338,26 @@ impl Profile {
         }
     }
 
+    /// For a tabulated profile: the knot interval `(lo, J1(lo)), (hi, J1(hi))` holding the half-width
+    /// whose symmetric moment is `target`, or `Err(last knot)` when the table is too short.
+    /// `None` for analytic profiles.
+    pub(crate) fn moment_bracket(
+        &self,
+        target: f64,
+    ) -> Option<std::result::Result<[(f64, f64); 2], f64>> {
+        let Slope::Pieces(p) = &self.slope else {
+            return None;
+        };
+        let table = &p.knot_moments;
+        let last = *table.last()?;
+        let i = table.partition_point(|&(_, m)| m < target);
+        Some(if i == table.len() {
+            Err(last.0 * (target / last.1).sqrt())
+        } else {
+            Ok([if i == 0 { (0.0, 0.0) } else { table[i - 1] }, table[i]])
+        })
+    }
+
     /// The slope formula of the smooth piece containing `inside`, continued analytically to `at`
     /// (`None` where no continuation exists: a non-integer power law across x = 0).
     pub(crate) fn slope_branch(&self, inside: f64, at: f64) -> Option<f64> {
@@ -338,10 +371,7 @@ impl Profile {
     /// is `P = J1/A` (THEORY.md "Normal problem").
     pub(crate) fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
         match &self.slope {
-            Slope::Pieces(p) => {
-                let s = p.integrals(a, 0.0)?;
-                Ok((s.j1, s.j1_d))
-            }
+            Slope::Pieces(p) => p.symmetric_moment(a),
             Slope::Power(p) => {
                 // integral_0^pi |cos t|^k dt = 2 W_k, W_k = (sqrt(pi)/2) Gamma((k+1)/2)/Gamma(k/2+1).
                 let k = p.exponent;
@@ -396,6 +426,9 @@ struct Pieces {
     /// `(x, g'(x+) - g'(x-))` for the breaks where g' jumps, over the whole line.
     jumps: Vec<(f64, f64)>,
     extent: f64,
+    /// `(a, J1(a, 0))` at every piece boundary a > 0 of a finite table: brackets the contact
+    /// law's inverse to one interval.
+    knot_moments: Vec<(f64, f64)>,
 }
 
 impl Pieces {
@@ -430,11 +463,20 @@ impl Pieces {
         }
         jumps.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut pieces: Vec<Piece> = positive.iter().rev().map(Piece::mirrored).collect();
-        pieces.extend(positive);
+        // Merge neighbours with the same formula (Hertz's two halves are one polynomial).
+        for p in positive {
+            match pieces.last_mut() {
+                Some(last) if last.origin == p.origin && last.coeffs == p.coeffs => {
+                    last.end = p.end
+                }
+                _ => pieces.push(p),
+            }
+        }
         Self {
             pieces,
             jumps,
             extent,
+            knot_moments: Vec::new(),
         }
     }
 
@@ -463,29 +505,53 @@ impl Pieces {
     /// Exact J0, J1 and derivatives: on each piece the integrands are polynomials in cos(theta),
     /// integrated by the moments `M_j = integral cos^j theta dtheta`.
     fn integrals(&self, d: f64, e: f64) -> Result<StickIntegrals> {
+        self.integrals_over(d, e, false)
+    }
+
+    /// `J1(a, 0)` and `dJ1/da` from the x >= 0 half alone (the integrand is even there).
+    fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
+        let s = self.integrals_over(a, 0.0, true)?;
+        Ok((2.0 * s.j1, 2.0 * s.j1_d))
+    }
+
+    /// With `from_centre`, only theta in [0, pi/2] (x >= 0 when e = 0) is integrated.
+    fn integrals_over(&self, d: f64, e: f64, from_centre: bool) -> Result<StickIntegrals> {
         let (lo, hi) = (e - d, e + d);
         self.check_extent("contact or stick zone", lo.abs().max(hi.abs()))?;
         // cos, sin and theta of the point xi, computed from distances to the zone ends so that
         // theta stays accurate near 0 and pi.
         let angle = |x: f64| {
+            if x >= hi {
+                return (1.0, 0.0, 0.0);
+            }
+            if x <= lo {
+                return (-1.0, 0.0, PI);
+            }
             let c = ((x - e) / d).clamp(-1.0, 1.0);
-            let s = ((hi - x).max(0.0) * (x - lo).max(0.0)).sqrt() / d;
+            let s = ((hi - x) * (x - lo)).sqrt() / d;
             (c, s, s.atan2(c))
         };
         let mut out = StickIntegrals::default();
-        let first = self.pieces.partition_point(|p| p.end <= lo);
+        let start = if from_centre { e } else { lo };
+        let first = self.pieces.partition_point(|p| p.end <= start);
+        // Pieces ascend in x, so theta descends: each piece's upper end is the next one's lower.
+        let (mut cb, mut sb, mut tb) = if from_centre {
+            (0.0, 1.0, 0.5 * PI)
+        } else {
+            (-1.0, 0.0, PI)
+        };
         for p in &self.pieces[first..] {
             if p.start >= hi {
                 break;
             }
-            let (ca, sa, ta) = angle(p.end.min(hi));
-            let (cb, sb, tb) = angle(p.start.max(lo));
+            let (ca, sa, ta) = angle(p.end);
             let mut m = [0.0; 5];
             m[0] = tb - ta;
             m[1] = sb - sa;
             m[2] = 0.5 * (cb * sb - ca * sa) + 0.5 * m[0];
             m[3] = (cb * cb * sb - ca * ca * sa) / 3.0 + 2.0 / 3.0 * m[1];
-            m[4] = 0.25 * (cb.powi(3) * sb - ca.powi(3) * sa) + 0.75 * m[2];
+            m[4] = 0.25 * (cb * cb * cb * sb - ca * ca * ca * sa) + 0.75 * m[2];
+            (cb, sb, tb) = (ca, sa, ta);
             let [q0, q1, q2] = p.coeffs;
             let u = e - p.origin;
             // g'(xi) and g''(xi) as polynomials in c = cos(theta).
@@ -506,7 +572,7 @@ impl Pieces {
         }
         // Leibniz terms where g' jumps inside the zone: d(theta_k)/de = 1/(d sin), d/dd = cos/(d sin).
         for &(x, jump) in &self.jumps {
-            if x > lo && x < hi {
+            if x > start && x < hi {
                 let (c, s, _) = angle(x);
                 let k = jump / (d * s);
                 out.j0_e += k;
@@ -554,8 +620,9 @@ impl PowerSlope {
             let mut s1 = 0.0;
             for (t, w) in self.rule.nodes.iter().zip(&self.rule.weights) {
                 let theta = theta0 - sign * length * t;
-                let r = 2.0 * d * (0.5 * (theta + theta0)).sin() * (0.5 * length * t).sin()
-                    / (length * t);
+                // |xi| = L t R(t); xi from one cosine loses at most ~1e-14 relative at the
+                // node nearest theta0 (t ~ 0.01), whose weight is small.
+                let r = (e + d * theta.cos()).abs() / (length * t);
                 let rk1 = r.powf(k - 1.0);
                 s0 += w * rk1;
                 s1 += w * t * rk1 * r;
@@ -566,20 +633,24 @@ impl PowerSlope {
         (j0, j1)
     }
 
-    /// Values plus a forward-difference Jacobian (step 1e-7 d: Newton needs only an approximate
-    /// Jacobian, the solution's accuracy is set by the values).
+    /// Values and Jacobian. Because `xi g''(xi) = (k-1) g'(xi)` and the integrals are homogeneous
+    /// (J0 of degree k-1, J1 of degree k in (d, e)), `dJ1/de = k J0`,
+    /// `d dJ0/dd + e dJ0/de = (k-1) J0` and `d dJ1/dd + e dJ1/de = k J1`: only `dJ0/de` needs a
+    /// (forward) difference, step 1e-7 d. Newton needs only an approximate Jacobian; the
+    /// solution's accuracy is set by the values.
     fn integrals(&self, d: f64, e: f64) -> StickIntegrals {
+        let k = self.exponent;
         let h = 1e-7 * d;
         let (j0, j1) = self.values(d, e);
-        let (j0dd, j1dd) = self.values(d + h, e);
-        let (j0de, j1de) = self.values(d, e + h);
+        let j0_e = (self.values(d, e + h).0 - j0) / h;
+        let j1_e = k * j0;
         StickIntegrals {
             j0,
             j1,
-            j0_d: (j0dd - j0) / h,
-            j0_e: (j0de - j0) / h,
-            j1_d: (j1dd - j1) / h,
-            j1_e: (j1de - j1) / h,
+            j0_d: ((k - 1.0) * j0 - e * j0_e) / d,
+            j0_e,
+            j1_d: (k * j1 - e * j1_e) / d,
+            j1_e,
         }
     }
 }

@@ -313,7 +313,7 @@ pub fn stick_zone(
     // equilibrium a force (compare with f (P1 + P2)).
     let s1 = PI * contact.profile.slope(d)?.abs().max(f64::MIN_POSITIVE);
     let s2 = f * normal_sum;
-    let norm = |r: [f64; 2]| (r[0] / s1).hypot(r[1] / s2);
+    let norm = |r: [f64; 2]| ((r[0] / s1).powi(2) + (r[1] / s2).powi(2)).sqrt();
     let (mut r, mut jac) = residual(d, e)?;
     let mut last_step = f64::INFINITY;
     for iteration in 1..=options.max_iterations {
@@ -322,6 +322,14 @@ pub fn stick_zone(
         let step_e = -(-jac[1][0] * r[0] + jac[0][0] * r[1]) / det;
         if !(step_d.is_finite() && step_e.is_finite()) {
             break;
+        }
+        // Converged: the Newton step estimates the error, and its square is what remains. Tested
+        // before the line search, which rounding would otherwise stall near the root.
+        if step_d.abs().max(step_e.abs()) <= options.tolerance * d {
+            return Ok((
+                StickZone::from_half_width(d + step_d, e + step_e),
+                iteration,
+            ));
         }
         let current = norm(r);
         let mut lambda = 1.0;
@@ -354,9 +362,6 @@ pub fn stick_zone(
                 return Ok((StickZone::from_half_width(d, e), iteration));
             }
             None => break,
-        }
-        if last_step <= options.tolerance || current == 0.0 {
-            return Ok((StickZone::from_half_width(d, e), iteration));
         }
     }
     Err(Error::NoConvergence {

@@ -1,0 +1,341 @@
+//! End-to-end tests of the `halfplane` binary: bundled examples, output formats and bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_halfplane"))
+        .args(args)
+        .output()
+        .expect("run halfplane")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let o = run(args);
+    assert!(o.status.success(), "{args:?} failed: {}", stderr(&o));
+    serde_json::from_str(&stdout(&o)).expect("valid JSON")
+}
+
+#[test]
+fn steady_json_has_the_documented_fields() {
+    let case = examples().join("hertz.toml");
+    let v = json(&["steady", case.to_str().unwrap(), "--json"]);
+    assert_eq!(v["regime"], "partial-slip");
+    let num = |path: &str| {
+        v.pointer(path)
+            .and_then(|x| x.as_f64())
+            .unwrap_or_else(|| panic!("missing {path}"))
+    };
+    // THEORY.md's checked values, to the 5 figures it quotes.
+    for (path, want) in [
+        ("/contact/half_width_1", 0.76113),
+        ("/contact/half_width_2", 0.90059),
+        ("/stick_zone/left", -0.66607),
+        ("/stick_zone/right", 0.68123),
+        ("/stick_zone/half_width", 0.67365),
+        ("/stick_zone/eccentricity", 0.0075833),
+    ] {
+        assert!(
+            (num(path) - want).abs() < 1e-5 * want.abs(),
+            "{path} = {}, want {want}",
+            num(path)
+        );
+    }
+    for path in [
+        "/slip_zones/left/at_point1",
+        "/slip_zones/left/at_point2",
+        "/slip_zones/right/at_point1",
+        "/slip_zones/right/at_point2",
+        "/asymptotic/stick_zone/left",
+        "/asymptotic/stick_zone/right",
+    ] {
+        assert!(num(path).is_finite(), "{path}");
+    }
+    assert!((num("/slip_zones/right/at_point2") - (0.90059 - 0.68123)).abs() < 2e-5);
+}
+
+#[test]
+fn every_bundled_example_runs_with_the_expected_regime() {
+    for (file, regime) in [
+        ("hertz.toml", "partial-slip"),
+        ("flat-rounded.toml", "partial-slip"),
+        ("tabulated.toml", "partial-slip"),
+        ("full-stick.toml", "full-stick"),
+        ("gross-sliding.toml", "gross-sliding"),
+    ] {
+        let case = examples().join(file);
+        let v = json(&["steady", case.to_str().unwrap(), "--json"]);
+        assert_eq!(v["regime"], regime, "{file}");
+        let table = run(&["steady", case.to_str().unwrap()]);
+        assert!(
+            table.status.success() && stdout(&table).contains(regime),
+            "{file}: {}",
+            stderr(&table)
+        );
+    }
+    // The tabulated example samples the flat-rounded one: same stick zone to rounding.
+    let a = json(&[
+        "steady",
+        examples().join("flat-rounded.toml").to_str().unwrap(),
+        "--json",
+    ]);
+    let b = json(&[
+        "steady",
+        examples().join("tabulated.toml").to_str().unwrap(),
+        "--json",
+    ]);
+    let (x, y) = (
+        a["stick_zone"]["right"].as_f64().unwrap(),
+        b["stick_zone"]["right"].as_f64().unwrap(),
+    );
+    assert!((x - y).abs() < 1e-11, "{x} vs {y}");
+}
+
+#[test]
+fn evolve_csv_has_the_documented_columns() {
+    let case = examples().join("hertz.toml");
+    let o = run(&["evolve", case.to_str().unwrap(), "--points", "5", "--csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let mut lines = text.lines();
+    assert!(lines.next().unwrap().starts_with(
+        "half,fraction,normal,shear,bulk,half_width,stick_left,stick_right,asymptotic_stick_left,asymptotic_stick_right"
+    ));
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 10);
+    // The last row of half 1 is at point 2 and carries the permanent stick zone.
+    let cells: Vec<&str> = rows[4].split(',').collect();
+    assert_eq!(cells[0], "1");
+    assert!((cells[7].parse::<f64>().unwrap() - 0.68123).abs() < 1e-5);
+    let v = json(&["evolve", case.to_str().unwrap(), "--points", "3", "--json"]);
+    assert_eq!(v["points"].as_array().unwrap().len(), 6);
+}
+
+/// Writes a case file (with an optional profile table) into a fresh directory.
+fn case_with(name: &str, text: &str, table: Option<&str>) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("halfplane-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    if let Some(t) = table {
+        std::fs::write(dir.join("p.csv"), t).unwrap();
+    }
+    let path = dir.join("case.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+const GOOD: &str = r#"
+[material]
+youngs_modulus = 200000.0
+poisson_ratio = 0.3
+[friction]
+coefficient = 0.6
+[profile]
+kind = "hertz"
+radius = 50.0
+[cycle]
+point1 = { normal = 1000.0, shear = -250.0, bulk = -20.0 }
+point2 = { normal = 1400.0, shear = 250.0, bulk = 20.0 }
+"#;
+
+fn tabulated(table_line: &str) -> String {
+    GOOD.replace(
+        "kind = \"hertz\"\nradius = 50.0",
+        &format!("kind = \"tabulated\"\n{table_line}"),
+    )
+}
+
+#[test]
+fn bad_input_names_the_field_and_the_valid_range() {
+    let cases: Vec<(&str, String, Option<&str>, &[&str])> = vec![
+        (
+            "neg-e",
+            GOOD.replace("youngs_modulus = 200000.0", "youngs_modulus = -1.0"),
+            None,
+            &["material.youngs_modulus", "> 0"],
+        ),
+        (
+            "zero-e",
+            GOOD.replace("youngs_modulus = 200000.0", "youngs_modulus = 0.0"),
+            None,
+            &["material.youngs_modulus", "> 0"],
+        ),
+        (
+            "nu",
+            GOOD.replace("poisson_ratio = 0.3", "poisson_ratio = 0.5"),
+            None,
+            &["material.poisson_ratio", "0 <= nu < 0.5"],
+        ),
+        (
+            "nu-neg",
+            GOOD.replace("poisson_ratio = 0.3", "poisson_ratio = -0.1"),
+            None,
+            &["material.poisson_ratio", "0 <= nu < 0.5"],
+        ),
+        (
+            "f",
+            GOOD.replace("coefficient = 0.6", "coefficient = 0.0"),
+            None,
+            &["friction.coefficient", "> 0"],
+        ),
+        (
+            "nan",
+            GOOD.replace("radius = 50.0", "radius = nan"),
+            None,
+            &["profile.radius", "finite"],
+        ),
+        (
+            "inf",
+            GOOD.replace("bulk = 20.0", "bulk = inf"),
+            None,
+            &["cycle.point2.bulk", "finite"],
+        ),
+        (
+            "p-zero",
+            GOOD.replace("normal = 1000.0", "normal = 0.0"),
+            None,
+            &["cycle.point1.normal", "> 0"],
+        ),
+        (
+            "p-neg",
+            GOOD.replace("normal = 1400.0", "normal = -5.0"),
+            None,
+            &["cycle.point2.normal", "> 0"],
+        ),
+        (
+            "kind",
+            GOOD.replace("kind = \"hertz\"", "kind = \"ellipse\""),
+            None,
+            &["profile.kind", "\"hertz\", \"flat-rounded\""],
+        ),
+        (
+            "missing-e",
+            GOOD.replace("youngs_modulus = 200000.0\n", ""),
+            None,
+            &["material.youngs_modulus", "> 0"],
+        ),
+        (
+            "missing-radius",
+            GOOD.replace("radius = 50.0\n", ""),
+            None,
+            &["profile.radius", "> 0"],
+        ),
+        (
+            "missing-section",
+            GOOD.replace("[friction]\ncoefficient = 0.6\n", ""),
+            None,
+            &["[friction]"],
+        ),
+        (
+            "unused-field",
+            GOOD.replace("radius = 50.0", "radius = 50.0\nexponent = 3.0"),
+            None,
+            &["profile.exponent", "not used"],
+        ),
+        (
+            "typo",
+            GOOD.replace("poisson_ratio", "poisson"),
+            None,
+            &["poisson"],
+        ),
+        (
+            "power-k",
+            GOOD.replace(
+                "kind = \"hertz\"\nradius = 50.0",
+                "kind = \"power-law\"\ncoefficient = 0.01\nexponent = 0.5",
+            ),
+            None,
+            &["profile.exponent", "k"],
+        ),
+        (
+            "no-file",
+            tabulated("file = \"absent.csv\""),
+            None,
+            &["profile.file", "absent.csv"],
+        ),
+        (
+            "non-monotone",
+            tabulated("file = \"p.csv\""),
+            Some("x,g\n0,0\n0.5,0.001\n0.4,0.002\n1,0.01\n"),
+            &["line 4", "strictly increasing"],
+        ),
+        (
+            "g-decreasing",
+            tabulated("file = \"p.csv\""),
+            Some("x,g\n0,0\n0.5,0.003\n0.7,0.002\n1,0.01\n"),
+            &["line 4", "non-decreasing"],
+        ),
+        (
+            "bad-number",
+            tabulated("file = \"p.csv\""),
+            Some("x,g\n0,0\n0.5,abc\n1,0.01\n"),
+            &["line 3", "not a number"],
+        ),
+        (
+            "header",
+            tabulated("file = \"p.csv\""),
+            Some("a,b\n0,0\n1,0.01\n"),
+            &["header", "x,g"],
+        ),
+        ("empty", tabulated("file = \"p.csv\""), Some(""), &["empty"]),
+        (
+            "short-table",
+            tabulated("file = \"p.csv\""),
+            Some("x,g\n0,0\n0.2,0.0004\n0.4,0.0016\n"),
+            &["extend the table"],
+        ),
+        (
+            "kink",
+            tabulated("file = \"p.csv\"\nkinks = [0.33]"),
+            Some("x,g\n0,0\n0.5,0.001\n1,0.01\n2,0.04\n"),
+            &["profile.kinks"],
+        ),
+        (
+            "reversal",
+            GOOD.replace("bulk = -20.0", "bulk = -400.0")
+                .replace("bulk = 20.0", "bulk = 400.0"),
+            None,
+            &["halfplane march"],
+        ),
+    ];
+    for (name, text, table, needles) in cases {
+        let path = case_with(name, &text, table);
+        let o = run(&["steady", path.to_str().unwrap(), "--json"]);
+        let err = stderr(&o);
+        assert!(
+            !o.status.success(),
+            "{name}: should fail, printed {}",
+            stdout(&o)
+        );
+        assert!(!err.contains("panicked"), "{name}: panicked: {err}");
+        assert!(!stdout(&o).contains("NaN"), "{name}");
+        for needle in needles {
+            assert!(
+                err.contains(needle),
+                "{name}: error does not mention {needle:?}: {err}"
+            );
+        }
+    }
+}
+
+#[test]
+fn unreadable_case_file_is_a_clear_error() {
+    let o = run(&["steady", "/nonexistent/case.toml"]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("cannot read case file"),
+        "{}",
+        stderr(&o)
+    );
+}
