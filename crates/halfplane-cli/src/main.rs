@@ -12,7 +12,7 @@ use std::process::ExitCode;
 
 /// Frictional half-plane contact: steady-state stick zones, slip zones and their evolution.
 #[derive(Parser)]
-#[command(name = "halfplane", version, about)]
+#[command(name = "halfplane", version)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

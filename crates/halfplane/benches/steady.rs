@@ -25,9 +25,10 @@ fn cycle() -> Cycle {
     )
 }
 
-/// The bundled example's table: flat-rounded b = 0.3, R = 50, 41 rows, kink at 0.3.
-fn table() -> Profile {
-    let x: Vec<f64> = (0..=40).map(|i| i as f64 / 20.0).collect();
+/// The bundled example's table (`rows` = 41): flat-rounded b = 0.3, R = 50 on [0, 2], kink at 0.3.
+fn table(rows: usize) -> Profile {
+    let n = rows - 1;
+    let x: Vec<f64> = (0..=n).map(|i| 2.0 * i as f64 / n as f64).collect();
     let g = x
         .iter()
         .map(|&x: &f64| {
@@ -74,8 +75,8 @@ fn power_law(b: divan::Bencher, exponent: f64) {
     b.bench(|| solve(&c, &SteadyOptions::default()));
 }
 
-#[divan::bench]
-fn tabulated(b: divan::Bencher) {
-    let c = contact(table());
+#[divan::bench(args = [41, 401])]
+fn tabulated(b: divan::Bencher, rows: usize) {
+    let c = contact(table(rows));
     b.bench(|| solve(&c, &SteadyOptions::default()));
 }

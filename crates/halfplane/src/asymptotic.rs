@@ -131,7 +131,7 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
     for edge in [Edge::Left, Edge::Right] {
         let i = edge as usize;
         let p_k = p0 - (hi.equivalent_shear[i] - lo.equivalent_shear[i]) / (2.0 * f);
-        if !(p_k > 0.0) {
+        if p_k.is_nan() || p_k <= 0.0 {
             return Err(Error::AsymptoticBreakdown {
                 edge: edge.name(),
                 p_k,

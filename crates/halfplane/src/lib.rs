@@ -1,25 +1,52 @@
 //! # halfplane
 //!
 //! Frictional contact of elastically similar bodies idealised as half-planes, under varying
-//! normal load P, shear load Q and bulk tension sigma. See `THEORY.md` in the project for the sign
-//! conventions.
+//! normal load P, shear load Q and bulk tension sigma (plane strain, Coulomb friction).
+//!
+//! The sign conventions are those of the project's `THEORY.md`: point 1 of a cycle is the end with
+//! the smaller Q, `dQ = Q2 - Q1 >= 0`, `dsigma = sigma1 - sigma2`, and bulk tension adds to the
+//! shear at the left edge. Every function that implements a formula cites the paper's equation
+//! label (Andresen, Hills, Barber & Vazquez) or its reference.
+//!
+//! ```
+//! use halfplane::{steady, Contact, Cycle, Friction, LoadPoint, Material, Profile, SteadyOptions};
+//!
+//! let contact = Contact::new(Profile::hertz(50.0)?, Material::new(200_000.0, 0.3)?, Friction::new(0.6)?);
+//! let cycle = Cycle::new(
+//!     LoadPoint::new("point1", 1000.0, -250.0, -20.0)?,
+//!     LoadPoint::new("point2", 1400.0, 250.0, 20.0)?,
+//! );
+//! let state = steady::analyse(&contact, &cycle, &SteadyOptions::default())?;
+//! let zone = state.stick_zone.unwrap();
+//! assert!((zone.right - 0.68123).abs() < 1e-5); // THEORY.md's checked value
+//! # Ok::<(), halfplane::Error>(())
+//! ```
+//!
+//! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
+//! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
+//! (edge description), [`evolution`] (stick zone along the cycle), [`closed_form`] (reference
+//! solutions), [`load`] and [`material`] (validated inputs), [`error`].
 
+pub mod asymptotic;
+pub mod closed_form;
 pub mod error;
+pub mod evolution;
 pub mod load;
 pub mod material;
+pub mod normal;
 pub mod profile;
 mod quadrature;
 mod spline;
+pub mod steady;
 
 pub use error::{Error, Result};
 pub use load::{Cycle, LoadPoint};
 pub use material::{Compliance, Friction, Material};
-pub use profile::{Profile, Shape};
-pub mod closed_form;
-pub mod normal;
-pub mod steady;
-
 pub use normal::Contact;
+pub use profile::{Profile, Shape};
 pub use steady::{analyse, Regime, SteadyOptions, SteadyState, StickZone};
-pub mod asymptotic;
-pub mod evolution;
+
+/// The README's Rust example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;

@@ -151,7 +151,8 @@ impl Contact {
     pub fn pressure(&self, half_width: f64, x: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
         let a = half_width;
-        if !(x.abs() < a) {
+        crate::error::finite("position x", x)?;
+        if x.abs() >= a {
             return Ok(0.0);
         }
         let a_comp = self.compliance().value();

@@ -505,53 +505,54 @@ impl Pieces {
     /// Exact J0, J1 and derivatives: on each piece the integrands are polynomials in cos(theta),
     /// integrated by the moments `M_j = integral cos^j theta dtheta`.
     fn integrals(&self, d: f64, e: f64) -> Result<StickIntegrals> {
-        self.integrals_over(d, e, false)
+        self.integrals_over::<true>(d, e, false)
     }
 
     /// `J1(a, 0)` and `dJ1/da` from the x >= 0 half alone (the integrand is even there).
     fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
-        let s = self.integrals_over(a, 0.0, true)?;
+        let s = self.integrals_over::<false>(a, 0.0, true)?;
         Ok((2.0 * s.j1, 2.0 * s.j1_d))
     }
 
-    /// With `from_centre`, only theta in [0, pi/2] (x >= 0 when e = 0) is integrated.
-    fn integrals_over(&self, d: f64, e: f64, from_centre: bool) -> Result<StickIntegrals> {
+    /// With `from_centre`, only theta in [0, pi/2] (x >= 0 when e = 0) is integrated. Without
+    /// `ALL`, only J1 and dJ1/dd are accumulated (what the contact law needs).
+    fn integrals_over<const ALL: bool>(
+        &self,
+        d: f64,
+        e: f64,
+        from_centre: bool,
+    ) -> Result<StickIntegrals> {
         let (lo, hi) = (e - d, e + d);
         self.check_extent("contact or stick zone", lo.abs().max(hi.abs()))?;
         // cos, sin and theta of the point xi, computed from distances to the zone ends so that
         // theta stays accurate near 0 and pi.
         let angle = |x: f64| {
             if x >= hi {
-                return (1.0, 0.0, 0.0);
+                return (1.0, 0.0);
             }
             if x <= lo {
-                return (-1.0, 0.0, PI);
+                return (-1.0, 0.0);
             }
             let c = ((x - e) / d).clamp(-1.0, 1.0);
-            let s = ((hi - x) * (x - lo)).sqrt() / d;
-            (c, s, s.atan2(c))
+            (c, ((hi - x) * (x - lo)).sqrt() / d)
         };
         let mut out = StickIntegrals::default();
         let start = if from_centre { e } else { lo };
         let first = self.pieces.partition_point(|p| p.end <= start);
         // Pieces ascend in x, so theta descends: each piece's upper end is the next one's lower.
-        let (mut cb, mut sb, mut tb) = if from_centre {
-            (0.0, 1.0, 0.5 * PI)
-        } else {
-            (-1.0, 0.0, PI)
-        };
+        let (mut cb, mut sb) = if from_centre { (0.0, 1.0) } else { (-1.0, 0.0) };
         for p in &self.pieces[first..] {
             if p.start >= hi {
                 break;
             }
-            let (ca, sa, ta) = angle(p.end);
+            let (ca, sa) = angle(p.end);
             let mut m = [0.0; 5];
-            m[0] = tb - ta;
+            m[0] = angle_between(ca, sa, cb, sb);
             m[1] = sb - sa;
             m[2] = 0.5 * (cb * sb - ca * sa) + 0.5 * m[0];
             m[3] = (cb * cb * sb - ca * ca * sa) / 3.0 + 2.0 / 3.0 * m[1];
             m[4] = 0.25 * (cb * cb * cb * sb - ca * ca * ca * sa) + 0.75 * m[2];
-            (cb, sb, tb) = (ca, sa, ta);
+            (cb, sb) = (ca, sa);
             let [q0, q1, q2] = p.coeffs;
             let u = e - p.origin;
             // g'(xi) and g''(xi) as polynomials in c = cos(theta).
@@ -563,17 +564,19 @@ impl Pieces {
                 g[1] + e * gx[1] + d * gx[0],
                 g[2] + d * gx[1],
             ];
-            out.j0 += g[0] * m[0] + g[1] * m[1] + g[2] * m[2];
             out.j1 += xg[0] * m[0] + xg[1] * m[1] + xg[2] * m[2] + xg[3] * m[3];
-            out.j0_e += gx[0] * m[0] + gx[1] * m[1];
-            out.j0_d += gx[0] * m[1] + gx[1] * m[2];
-            out.j1_e += h[0] * m[0] + h[1] * m[1] + h[2] * m[2];
             out.j1_d += h[0] * m[1] + h[1] * m[2] + h[2] * m[3];
+            if ALL {
+                out.j0 += g[0] * m[0] + g[1] * m[1] + g[2] * m[2];
+                out.j0_e += gx[0] * m[0] + gx[1] * m[1];
+                out.j0_d += gx[0] * m[1] + gx[1] * m[2];
+                out.j1_e += h[0] * m[0] + h[1] * m[1] + h[2] * m[2];
+            }
         }
         // Leibniz terms where g' jumps inside the zone: d(theta_k)/de = 1/(d sin), d/dd = cos/(d sin).
         for &(x, jump) in &self.jumps {
             if x > start && x < hi {
-                let (c, s, _) = angle(x);
+                let (c, s) = angle(x);
                 let k = jump / (d * s);
                 out.j0_e += k;
                 out.j0_d += k * c;
@@ -582,6 +585,34 @@ impl Pieces {
             }
         }
         Ok(out)
+    }
+}
+
+/// `theta_b - theta_a` (in [0, pi]) from the cosines and sines of the two angles. Pieces of a fine
+/// table subtend small angles, where the odd series of atan is exact to rounding and several times
+/// cheaper than `atan2`.
+fn angle_between(ca: f64, sa: f64, cb: f64, sb: f64) -> f64 {
+    let y = sb * ca - cb * sa;
+    let x = cb * ca + sb * sa;
+    if x > 0.0 && y.abs() <= 0.1 * x {
+        // atan z = z (1 - z^2 (1/3 - z^2 (1/5 - ...))), nine terms; the first omitted one,
+        // z^19/19, is below 1e-19 |z| for |z| <= 0.1.
+        let z = y / x;
+        let z2 = z * z;
+        const INVERSE_ODD: [f64; 9] = [
+            1.0,
+            1.0 / 3.0,
+            1.0 / 5.0,
+            1.0 / 7.0,
+            1.0 / 9.0,
+            1.0 / 11.0,
+            1.0 / 13.0,
+            1.0 / 15.0,
+            1.0 / 17.0,
+        ];
+        z * INVERSE_ODD.iter().rev().fold(0.0, |sum, c| c - z2 * sum)
+    } else {
+        y.atan2(x)
     }
 }
 
@@ -736,6 +767,26 @@ mod tests {
                     p.shape()
                 );
             }
+        }
+    }
+
+    #[test]
+    fn angle_between_matches_atan2_on_both_paths() {
+        // Series path (small angles) and atan2 path agree with the difference of atan2 values.
+        for (ta, tb) in [
+            (0.3, 0.31),
+            (1.0, 1.05),
+            (0.2, 0.2001),
+            (0.0, 2.5),
+            (1.0, 3.1),
+            (0.5, 0.59),
+        ] {
+            let got = angle_between(f64::cos(ta), f64::sin(ta), f64::cos(tb), f64::sin(tb));
+            assert!(
+                (got - (tb - ta)).abs() < 2e-16,
+                "({ta}, {tb}): {got} vs {}",
+                tb - ta
+            );
         }
     }
 

@@ -6,6 +6,7 @@ use crate::error::{Error, Result};
 
 /// Positive nodes of the 20-point Gauss-Legendre rule on [-1, 1] (computed to 40 digits with
 /// mpmath; checked against Golub-Welsch in the tests).
+#[allow(clippy::excessive_precision)] // the reference digits, rounded by the compiler
 const GL_NODES: [f64; 10] = [
     0.076_526_521_133_497_333_755,
     0.227_785_851_141_645_078_08,
@@ -18,6 +19,7 @@ const GL_NODES: [f64; 10] = [
     0.963_971_927_277_913_791_27,
     0.993_128_599_185_094_924_79,
 ];
+#[allow(clippy::excessive_precision)]
 const GL_WEIGHTS: [f64; 10] = [
     0.152_753_387_130_725_850_7,
     0.149_172_986_472_603_746_79,

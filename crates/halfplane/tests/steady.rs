@@ -194,7 +194,7 @@ fn kinks_inside_the_stick_zone_keep_full_accuracy() {
             x.signum() * (x.abs() - b) / r
         }
     };
-    let mut cuts = vec![0.0, PI, ((b - e) / d).acos(), ((-b - e) / d).acos()];
+    let mut cuts = [0.0, PI, ((b - e) / d).acos(), ((-b - e) / d).acos()];
     cuts.sort_by(f64::total_cmp);
     let j = |weight: &dyn Fn(f64) -> f64| -> f64 {
         cuts.windows(2)

@@ -33,6 +33,7 @@ pub fn sampled(g: impl Fn(f64) -> f64, end: f64, n: usize) -> (Vec<f64>, Vec<f64
 /// Composite 10-point Gauss-Legendre over [a, b] with `panels` equal panels; independent of the
 /// library's quadrature module. Callers put panel boundaries at kinks.
 pub fn integrate(a: f64, b: f64, panels: usize, f: impl Fn(f64) -> f64) -> f64 {
+    #[allow(clippy::excessive_precision)]
     const X: [f64; 5] = [
         0.148_874_338_981_631_2,
         0.433_395_394_129_247_2,
@@ -40,6 +41,7 @@ pub fn integrate(a: f64, b: f64, panels: usize, f: impl Fn(f64) -> f64) -> f64 {
         0.865_063_366_688_984_5,
         0.973_906_528_517_171_7,
     ];
+    #[allow(clippy::excessive_precision)]
     const W: [f64; 5] = [
         0.295_524_224_714_752_9,
         0.269_266_719_309_996_4,
