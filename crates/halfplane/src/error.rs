@@ -89,6 +89,26 @@ pub enum Error {
         p_k: f64,
     },
 
+    /// The contact slides at an increment of a marched history.
+    #[error("the contact slides at step {step}: |Q| = {shear:.6} >= f P = {limit:.6} (gross sliding); the history must keep |Q| < f P")]
+    SlidesAtStep {
+        /// 1-based increment.
+        step: usize,
+        /// |Q| there.
+        shear: f64,
+        /// f P there.
+        limit: f64,
+    },
+
+    /// The stick/slip active set of an increment did not settle.
+    #[error("the stick/slip state did not settle at step {step} after {iterations} passes; try more cells or smaller increments")]
+    ActiveSet {
+        /// 1-based increment.
+        step: usize,
+        /// Passes made.
+        iterations: usize,
+    },
+
     /// An iterative solve did not reach its tolerance.
     #[error(
         "{what} did not converge in {iterations} iterations (last relative step {last_step:e})"

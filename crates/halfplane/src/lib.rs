@@ -31,6 +31,7 @@ pub mod asymptotic;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;
+pub mod history;
 pub mod load;
 pub mod material;
 pub mod normal;
@@ -50,3 +51,4 @@ pub use steady::{analyse, Regime, SteadyOptions, SteadyState, StickZone};
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
 struct ReadmeDoctests;
+pub mod march;

@@ -145,9 +145,10 @@ impl Contact {
     /// `integral_0^pi (g'(a cos t) - g'(x))/(a cos t - x) dt`, split at x and wherever the slope formula changes. On a
     /// piece that does not hold x, the piece's own slope formula continued to x, `c`, is
     /// subtracted too, so the remaining integrand is regular even when x is close to the piece,
-    /// and `(c - g'(x)) integral dt/(a cos t - x)` is added in closed form. Each piece is summed
-    /// by 20-point Gauss-Legendre: exact to rounding for piecewise-polynomial slopes; for a
-    /// non-integer power law near x = 0 (no continuation across 0) about 1e-6 relative.
+    /// and `(c - g'(x)) integral dt/(a cos t - x)` is added in closed form. Piecewise-polynomial
+    /// slopes (Hertz, flat-rounded, tabulated) are then integrated exactly in closed form; the
+    /// power law by 20-point Gauss-Legendre per piece, about 1e-6 relative near x = 0 for a
+    /// non-integer exponent (no continuation across 0), exact to rounding elsewhere.
     pub fn pressure(&self, half_width: f64, x: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
         let a = half_width;
@@ -162,6 +163,9 @@ impl Contact {
         let gx = self.profile.slope(x)?;
         self.profile.slope(a)?;
         let root = (a * a - x * x).sqrt();
+        if let Some(sum) = self.profile.pressure_integral(a, x) {
+            return Ok((root / (PI * a_comp) * sum).max(0.0));
+        }
         // integral dt/(a cos t - x) = L(t) with tan(t/2) substitution; L(pi) = 0.
         let k = ((a - x) / (a + x)).sqrt();
         let log_kernel = |t: f64| {

@@ -1,0 +1,583 @@
+//! Numerical time marching of the partial-slip problem for any load history (beyond the paper;
+//! THEORY.md "Numerical time marching").
+//!
+//! Formulation: elastically similar bodies, so the pressure at each increment is the normal
+//! solution for the current P. Tractions are piecewise constant on N equal cells spanning the
+//! largest contact of the history, collocated at cell centres. The relative tangential surface
+//! displacement is
+//!
+//! `h(x) = -(A/pi) integral q(xi) ln|xi - x| dxi + (A/4) sigma x + C`,
+//!
+//! with the rigid shift C fixed by `integral q = Q`. Lengths in the logarithm are scaled by
+//! `l = 4L` (L the half-span), which changes only C and makes the cell matrix
+//! `G_ij = -integral_cell_j ln(|xi - x_i|/l) dxi` symmetric positive definite Toeplitz.
+//!
+//! Each increment solves the Coulomb complementarity problem by an active set: cells that stick
+//! keep `dh = 0` and `|q| <= f p`; cells that slip carry `q = f p sign(s)`, where the slip
+//! increment `s = -dh` is positive in the sense positive Q drives (so friction opposes the relative
+//! displacement increment, as THEORY.md states). Cells whose traction exceeds the limit start to
+//! slip; slipping cells whose slip would reverse stick again; repeat until nothing changes. The
+//! stick cells' linear system is solved exactly by the Toeplitz inverse of each contiguous stick
+//! run (Gohberg-Semencul, O(n log n)), with preconditioned conjugate gradients coupling several
+//! runs. Material entering contact starts stuck with zero traction; material leaving contact
+//! drops its traction. Stick and slip are reported kinematically, by the slip increment.
+
+mod toeplitz;
+
+use crate::error::{Error, Result};
+use crate::history::History;
+use crate::load::LoadPoint;
+use crate::normal::Contact;
+use std::f64::consts::PI;
+use toeplitz::Toeplitz;
+
+/// Solver parameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarchOptions {
+    /// Cells across the largest contact of the history; default 400 (stick boundaries within
+    /// 0.3% of the contact width, see `docs/convergence.md`).
+    pub cells: usize,
+    /// Active-set passes allowed per increment; default 200 (a few are typical).
+    pub max_passes: usize,
+    /// A cell counts as slipping when its slip increment exceeds this fraction of `A f P`;
+    /// default 1e-10 (rounding in the displacement is ~1e-15 of it).
+    pub slip_tolerance: f64,
+    /// Cycles repeat when their slip ranges and energies agree to this fraction; default 1e-3.
+    pub shakedown_tolerance: f64,
+}
+
+impl Default for MarchOptions {
+    fn default() -> Self {
+        Self {
+            cells: 400,
+            max_passes: 200,
+            slip_tolerance: 1e-10,
+            shakedown_tolerance: 1e-3,
+        }
+    }
+}
+
+/// What a cell does in the current increment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Cell {
+    Out,
+    Stick,
+    /// Slipping with `q = sign f p`.
+    Slip(f64),
+}
+
+/// The fields after an increment, one value per cell.
+#[derive(Debug, Clone, Copy)]
+pub struct Fields<'a> {
+    /// Cell centres.
+    pub x: &'a [f64],
+    /// Contact pressure p.
+    pub pressure: &'a [f64],
+    /// Shear traction q (positive in the direction of positive Q).
+    pub traction: &'a [f64],
+    /// Accumulated slip (positive in the sense positive Q drives).
+    pub slip: &'a [f64],
+    /// Slip increment of this step.
+    pub slip_increment: &'a [f64],
+}
+
+/// Summary of one increment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepReport {
+    /// 1-based increment number.
+    pub step: usize,
+    /// The load reached.
+    pub load: LoadPoint,
+    /// Contact half-width.
+    pub half_width: f64,
+    /// Every stick interval `[left, right]` (kinematic: no slip in this increment), left to right.
+    pub stick_intervals: Vec<[f64; 2]>,
+    /// Frictional energy dissipated in this increment (per unit thickness).
+    pub energy_increment: f64,
+    /// Total dissipated so far.
+    pub energy: f64,
+    /// Active-set passes used.
+    pub passes: usize,
+}
+
+impl StepReport {
+    /// The largest stick interval, if any.
+    pub fn largest_stick(&self) -> Option<[f64; 2]> {
+        self.stick_intervals
+            .iter()
+            .copied()
+            .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
+    }
+}
+
+/// The marching state: `new` sets up the grid (the init stage), `step` advances one increment.
+pub struct Marcher {
+    contact: Contact,
+    options: MarchOptions,
+    compliance: f64,
+    friction: f64,
+    width: f64,
+    x: Vec<f64>,
+    kernel: Toeplitz,
+    step: usize,
+    load: LoadPoint,
+    energy: f64,
+    pressure: Vec<f64>,
+    traction: Vec<f64>,
+    slip: Vec<f64>,
+    slip_increment: Vec<f64>,
+    cells: Vec<Cell>,
+    // Work buffers, reused by every increment.
+    known: Vec<f64>,
+    dq: Vec<f64>,
+    work: Vec<f64>,
+    rhs: Vec<f64>,
+    u: Vec<f64>,
+    v: Vec<f64>,
+    pcg: [Vec<f64>; 4],
+}
+
+impl Marcher {
+    /// A grid of `options.cells` cells spanning `[-half_span, half_span]`, which must cover every
+    /// contact the history will reach. Starts unloaded.
+    pub fn new(contact: &Contact, half_span: f64, options: &MarchOptions) -> Result<Self> {
+        let n = options.cells;
+        if n < 8 {
+            return Err(Error::InvalidInput {
+                field: "solver.cells".into(),
+                value: n as f64,
+                valid: "a whole number >= 8",
+            });
+        }
+        crate::error::positive("grid half-span", half_span)?;
+        let width = 2.0 * half_span / n as f64;
+        let x: Vec<f64> = (0..n)
+            .map(|i| -half_span + (i as f64 + 0.5) * width)
+            .collect();
+        let scale = 4.0 * half_span;
+        let antiderivative = |t: f64| {
+            if t == 0.0 {
+                0.0
+            } else {
+                t * (t.abs() / scale).ln() - t
+            }
+        };
+        let row = (0..n).map(|k| {
+            let k = k as f64;
+            -(antiderivative((k + 0.5) * width) - antiderivative((k - 0.5) * width))
+        });
+        let kernel = Toeplitz::new(row.collect())?;
+        let zeros = vec![0.0; n];
+        Ok(Self {
+            contact: contact.clone(),
+            options: *options,
+            compliance: contact.compliance().value(),
+            friction: contact.friction.value(),
+            width,
+            x,
+            kernel,
+            step: 0,
+            load: LoadPoint {
+                normal: 0.0,
+                shear: 0.0,
+                bulk: 0.0,
+            },
+            energy: 0.0,
+            pressure: zeros.clone(),
+            traction: zeros.clone(),
+            slip: zeros.clone(),
+            slip_increment: zeros.clone(),
+            cells: vec![Cell::Out; n],
+            known: zeros.clone(),
+            dq: zeros.clone(),
+            work: zeros.clone(),
+            rhs: zeros.clone(),
+            u: zeros.clone(),
+            v: zeros.clone(),
+            pcg: [zeros.clone(), zeros.clone(), zeros.clone(), zeros],
+        })
+    }
+
+    /// The fields after the last increment.
+    pub fn fields(&self) -> Fields<'_> {
+        Fields {
+            x: &self.x,
+            pressure: &self.pressure,
+            traction: &self.traction,
+            slip: &self.slip,
+            slip_increment: &self.slip_increment,
+        }
+    }
+
+    /// Cell width.
+    pub fn cell_width(&self) -> f64 {
+        self.width
+    }
+
+    /// Advances to `load`.
+    pub fn step(&mut self, load: LoadPoint) -> Result<StepReport> {
+        let step = self.step + 1;
+        let name = format!("history row {step}");
+        let load = LoadPoint::new(&name, load.normal, load.shear, load.bulk)?;
+        let f = self.friction;
+        if load.shear.abs() >= f * load.normal {
+            return Err(Error::SlidesAtStep {
+                step,
+                shear: load.shear.abs(),
+                limit: f * load.normal,
+            });
+        }
+        let a = self.contact.half_width(load.normal)?;
+        let half_span = self.x[self.x.len() - 1] + 0.5 * self.width;
+        if a > half_span * (1.0 + 1e-12) {
+            return Err(Error::InvalidInput {
+                field: format!("{name}.normal"),
+                value: load.normal,
+                valid: "a load whose contact fits the grid (size the grid from the whole history)",
+            });
+        }
+        let n = self.x.len();
+        for i in 0..n {
+            let inside = self.x[i].abs() < a;
+            self.pressure[i] = if inside {
+                self.contact.pressure(a, self.x[i])?
+            } else {
+                0.0
+            };
+            match (inside, self.cells[i]) {
+                (false, _) => self.cells[i] = Cell::Out,
+                (true, Cell::Out) => self.cells[i] = Cell::Stick,
+                _ => {}
+            }
+        }
+        let d_sigma = load.bulk - self.load.bulk;
+        let c_disp = self.compliance / PI;
+        let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal;
+        let q_old_sum: f64 = self.traction.iter().sum();
+        let mut passes = 0;
+        loop {
+            passes += 1;
+            if passes > self.options.max_passes {
+                return Err(Error::ActiveSet {
+                    step,
+                    iterations: self.options.max_passes,
+                });
+            }
+            if !self.cells.iter().any(|c| *c == Cell::Stick) {
+                // All contact cells were flagged to slip while |Q| < fP: restart from full stick.
+                for c in self.cells.iter_mut().filter(|c| matches!(c, Cell::Slip(_))) {
+                    *c = Cell::Stick;
+                }
+            }
+            // Known traction increments: slip cells at the friction limit, released cells to zero.
+            for i in 0..n {
+                self.known[i] = match self.cells[i] {
+                    Cell::Out => -self.traction[i],
+                    Cell::Slip(sign) => sign * f * self.pressure[i] - self.traction[i],
+                    Cell::Stick => 0.0,
+                };
+            }
+            self.kernel.apply(&self.known, &mut self.work);
+            for i in 0..n {
+                self.rhs[i] = if self.cells[i] == Cell::Stick {
+                    -self.work[i] - 0.25 * PI * d_sigma * self.x[i]
+                } else {
+                    0.0
+                };
+            }
+            let target = load.shear / self.width - q_old_sum - self.known.iter().sum::<f64>();
+            self.solve_stick(&Rhs::Vector, step)?;
+            self.solve_stick(&Rhs::Ones, step)?;
+            let (su, sv) = (self.u.iter().sum::<f64>(), self.v.iter().sum::<f64>());
+            let c = (su - target) / sv;
+            for i in 0..n {
+                self.dq[i] = self.known[i]
+                    + if self.cells[i] == Cell::Stick {
+                        self.u[i] - c * self.v[i]
+                    } else {
+                        0.0
+                    };
+            }
+            self.kernel.apply(&self.dq, &mut self.work);
+            let mut changed = false;
+            for i in 0..n {
+                let s = -c_disp * (self.work[i] + 0.25 * PI * d_sigma * self.x[i] + c);
+                match self.cells[i] {
+                    Cell::Out => self.slip_increment[i] = 0.0,
+                    Cell::Stick => {
+                        self.slip_increment[i] = 0.0;
+                        let q = self.traction[i] + self.dq[i];
+                        if q.abs() > f * self.pressure[i] * (1.0 + 1e-12) {
+                            self.cells[i] = Cell::Slip(q.signum());
+                            changed = true;
+                        }
+                    }
+                    Cell::Slip(sign) => {
+                        self.slip_increment[i] = s;
+                        if s * sign < -tolerance {
+                            self.cells[i] = Cell::Stick;
+                            changed = true;
+                        }
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        let mut energy_increment = 0.0;
+        for i in 0..n {
+            self.traction[i] += self.dq[i];
+            if self.cells[i] == Cell::Out {
+                self.traction[i] = 0.0;
+            }
+            self.slip[i] += self.slip_increment[i];
+            energy_increment += self.traction[i] * self.slip_increment[i] * self.width;
+        }
+        self.energy += energy_increment;
+        self.step = step;
+        self.load = load;
+        // Kinematic classification: contact cells that did not slip this increment.
+        let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
+        let mut open: Option<usize> = None;
+        for i in 0..=n {
+            let sticks =
+                i < n && self.cells[i] != Cell::Out && self.slip_increment[i].abs() <= tolerance;
+            match (sticks, open) {
+                (true, None) => open = Some(i),
+                (false, Some(start)) => {
+                    let left = (self.x[start] - 0.5 * self.width).max(-a);
+                    let right = (self.x[i - 1] + 0.5 * self.width).min(a);
+                    stick_intervals.push([left, right]);
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        Ok(StepReport {
+            step,
+            load,
+            half_width: a,
+            stick_intervals,
+            energy_increment,
+            energy: self.energy,
+            passes,
+        })
+    }
+
+    /// Solves `G_SS z = b` on the stick cells S, into `u` (b = rhs) or `v` (b = 1).
+    fn solve_stick(&mut self, which: &Rhs, step: usize) -> Result<()> {
+        let runs = stick_runs(&self.cells);
+        let mut out = std::mem::take(match which {
+            Rhs::Vector => &mut self.u,
+            Rhs::Ones => &mut self.v,
+        });
+        let b: Vec<f64> = match which {
+            Rhs::Vector => self.rhs.clone(),
+            Rhs::Ones => self
+                .cells
+                .iter()
+                .map(|c| if *c == Cell::Stick { 1.0 } else { 0.0 })
+                .collect(),
+        };
+        out.iter_mut().for_each(|v| *v = 0.0);
+        let result = if runs.len() == 1 {
+            let (s, e) = runs[0];
+            self.kernel.solve(&b[s..e], &mut out[s..e]);
+            Ok(())
+        } else {
+            self.pcg(&runs, &b, &mut out, step)
+        };
+        match which {
+            Rhs::Vector => self.u = out,
+            Rhs::Ones => self.v = out,
+        }
+        result
+    }
+
+    /// Conjugate gradients on the stick cells, preconditioned by the exact inverse of each run.
+    fn pcg(
+        &mut self,
+        runs: &[(usize, usize)],
+        b: &[f64],
+        z: &mut [f64],
+        step: usize,
+    ) -> Result<()> {
+        let [r, p, ap, y] = &mut self.pcg;
+        r.copy_from_slice(b);
+        let b_norm = b.iter().map(|v| v * v).sum::<f64>().sqrt();
+        if b_norm == 0.0 {
+            return Ok(());
+        }
+        let precondition = |kernel: &mut Toeplitz, r: &[f64], y: &mut [f64]| {
+            y.iter_mut().for_each(|v| *v = 0.0);
+            for &(s, e) in runs {
+                kernel.solve(&r[s..e], &mut y[s..e]);
+            }
+        };
+        precondition(&mut self.kernel, r, y);
+        p.copy_from_slice(y);
+        let mut rz: f64 = r.iter().zip(y.iter()).map(|(a, b)| a * b).sum();
+        for _ in 0..500 {
+            self.kernel.apply(p, ap);
+            for (i, c) in self.cells.iter().enumerate() {
+                if *c != Cell::Stick {
+                    ap[i] = 0.0;
+                }
+            }
+            let alpha = rz / p.iter().zip(ap.iter()).map(|(a, b)| a * b).sum::<f64>();
+            for i in 0..z.len() {
+                z[i] += alpha * p[i];
+                r[i] -= alpha * ap[i];
+            }
+            if r.iter().map(|v| v * v).sum::<f64>().sqrt() <= 1e-13 * b_norm {
+                return Ok(());
+            }
+            precondition(&mut self.kernel, r, y);
+            let next: f64 = r.iter().zip(y.iter()).map(|(a, b)| a * b).sum();
+            let beta = next / rz;
+            rz = next;
+            for i in 0..p.len() {
+                p[i] = y[i] + beta * p[i];
+            }
+        }
+        Err(Error::ActiveSet {
+            step,
+            iterations: 500,
+        })
+    }
+}
+
+enum Rhs {
+    Vector,
+    Ones,
+}
+
+/// Maximal runs `[start, end)` of stick cells.
+fn stick_runs(cells: &[Cell]) -> Vec<(usize, usize)> {
+    let mut runs = Vec::new();
+    let mut start = None;
+    for i in 0..=cells.len() {
+        let stick = i < cells.len() && cells[i] == Cell::Stick;
+        match (stick, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                runs.push((s, i));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    runs
+}
+
+/// Per-cycle results.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CycleReport {
+    /// 1-based cycle number.
+    pub index: usize,
+    /// Energy dissipated during the cycle.
+    pub energy: f64,
+    /// Peak-to-peak range of the accumulated slip over the cycle, per cell.
+    pub slip_range: Vec<f64>,
+}
+
+impl CycleReport {
+    /// Largest slip amplitude (half the peak-to-peak range).
+    pub fn max_slip_amplitude(&self) -> f64 {
+        0.5 * self.slip_range.iter().fold(0.0f64, |m, v| m.max(*v))
+    }
+}
+
+/// Result of [`march`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MarchResult {
+    /// Cell centres.
+    pub x: Vec<f64>,
+    /// One report per increment.
+    pub steps: Vec<StepReport>,
+    /// One report per cycle (histories with cycles only).
+    pub cycles: Vec<CycleReport>,
+    /// The first cycle that the next one repeats (slip ranges and energy within
+    /// `shakedown_tolerance`), if any.
+    pub shakedown_cycle: Option<usize>,
+}
+
+/// Marches through `history`. `observer` sees each increment's report and fields as it is made
+/// (for progress bars and field output); nothing is printed or written here.
+pub fn march(
+    contact: &Contact,
+    history: &History,
+    options: &MarchOptions,
+    mut observer: impl FnMut(&StepReport, &Fields),
+) -> Result<MarchResult> {
+    if history.loads.is_empty() {
+        return Err(Error::InvalidTable {
+            row: 0,
+            problem: "the history has no rows".into(),
+        });
+    }
+    for (i, p) in history.loads.iter().enumerate() {
+        LoadPoint::new(&format!("history row {}", i + 1), p.normal, p.shear, p.bulk)?;
+    }
+    let p_max = history.loads.iter().map(|p| p.normal).fold(0.0, f64::max);
+    let span = contact.half_width(p_max)?;
+    let mut marcher = Marcher::new(contact, span, options)?;
+    let n = options.cells;
+    let mut steps = Vec::with_capacity(history.loads.len());
+    let mut cycles = Vec::new();
+    let (mut low, mut high) = (vec![0.0; n], vec![0.0; n]);
+    let mut cycle_energy_start = 0.0;
+    for (k, load) in history.loads.iter().enumerate() {
+        let cycle_of = |k: usize| {
+            history
+                .cycles
+                .and_then(|c| (k >= c.first_step).then(|| (k - c.first_step) / c.steps_per_cycle))
+                .filter(|&c| history.cycles.is_some_and(|s| c < s.count))
+        };
+        if let Some(c) = cycle_of(k) {
+            if k == history.cycles.unwrap().first_step + c * history.cycles.unwrap().steps_per_cycle
+            {
+                low.copy_from_slice(&marcher.slip);
+                high.copy_from_slice(&marcher.slip);
+                cycle_energy_start = marcher.energy;
+            }
+        }
+        let report = marcher.step(*load)?;
+        observer(&report, &marcher.fields());
+        if let Some(c) = cycle_of(k) {
+            for i in 0..n {
+                low[i] = low[i].min(marcher.slip[i]);
+                high[i] = high[i].max(marcher.slip[i]);
+            }
+            let s = history.cycles.unwrap();
+            if k + 1 == s.first_step + (c + 1) * s.steps_per_cycle {
+                cycles.push(CycleReport {
+                    index: c + 1,
+                    energy: marcher.energy - cycle_energy_start,
+                    slip_range: high.iter().zip(&low).map(|(h, l)| h - l).collect(),
+                });
+            }
+        }
+        steps.push(report);
+    }
+    let tol = options.shakedown_tolerance;
+    let slip_floor = 1e-12 * contact.compliance().value() * contact.friction.value() * p_max;
+    let shakedown_cycle = cycles.windows(2).find_map(|w| {
+        let scale = w[0].slip_range.iter().fold(slip_floor, |m, v| m.max(*v));
+        let ranges = w[0]
+            .slip_range
+            .iter()
+            .zip(&w[1].slip_range)
+            .all(|(a, b)| (a - b).abs() <= tol * scale);
+        let energy =
+            (w[0].energy - w[1].energy).abs() <= tol * w[0].energy.abs().max(slip_floor * p_max);
+        (ranges && energy).then_some(w[0].index)
+    });
+    Ok(MarchResult {
+        x: marcher.x.clone(),
+        steps,
+        cycles,
+        shakedown_cycle,
+    })
+}
