@@ -2,6 +2,8 @@
 //! error names the field (as the file spells it) and what would be valid.
 
 use anyhow::{anyhow, bail, Context, Result};
+use halfplane::history::{Harmonic, History, Ramp};
+use halfplane::march::MarchOptions;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -13,6 +15,37 @@ struct RawCase {
     friction: Option<RawFriction>,
     profile: Option<RawProfile>,
     cycle: Option<RawCycle>,
+    history: Option<RawHistory>,
+    solver: Option<RawSolver>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawHistory {
+    kind: Option<String>,
+    file: Option<String>,
+    cycles: Option<usize>,
+    steps_per_half: Option<usize>,
+    steps_per_cycle: Option<usize>,
+    ramp: Option<String>,
+    ramp_steps: Option<usize>,
+    normal: Option<RawHarmonic>,
+    shear: Option<RawHarmonic>,
+    bulk: Option<RawHarmonic>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawHarmonic {
+    mean: Option<f64>,
+    amplitude: Option<f64>,
+    phase: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSolver {
+    cells: Option<usize>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -55,14 +88,21 @@ struct RawPoint {
     bulk: Option<f64>,
 }
 
-/// A resolved case: a validated contact and, when the file has one, a cycle.
+/// A resolved case: a validated contact and, when the file has them, a cycle and a history.
 #[derive(Debug, Clone)]
 pub struct Case {
     pub contact: Contact,
     pub cycle: Option<Cycle>,
+    history: Option<History>,
+    pub solver: MarchOptions,
 }
 
 impl Case {
+    /// The history, or an error saying what `[history]` needs.
+    pub fn history(&self) -> Result<History> {
+        self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\", or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))
+    }
+
     /// The cycle, or an error saying the `[cycle]` section is needed.
     pub fn cycle(&self) -> Result<Cycle> {
         self.cycle.ok_or_else(|| anyhow!("missing section [cycle]: give point1 and point2, e.g. point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}"))
@@ -136,10 +176,208 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
             ))
         }
     };
+    let mut solver = MarchOptions::default();
+    if let Some(cells) = raw.solver.and_then(|s| s.cells) {
+        if cells < 8 {
+            bail!("invalid solver.cells = {cells}: must be a whole number >= 8");
+        }
+        solver.cells = cells;
+    }
+    // Resolved now so that every command reports a bad [history], required only by `march`.
+    let history = match raw.history {
+        Some(h) => Some(resolve_history(h, cycle.as_ref(), dir)?),
+        None => None,
+    };
     Ok(Case {
         contact: Contact::new(profile, material, friction),
         cycle,
+        history,
+        solver,
     })
+}
+
+fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<History> {
+    let kind = match (&h.kind, &h.file) {
+        (Some(k), _) => k.clone(),
+        (None, Some(_)) => "file".to_string(),
+        (None, None) => bail!("missing field history.kind: give \"file\" (with file = ...), \"cycle\" or \"harmonic\""),
+    };
+    let used: &[&str] = match kind.as_str() {
+        "file" => &["file"],
+        "cycle" => &["cycles", "steps_per_half", "ramp", "ramp_steps"],
+        "harmonic" => &[
+            "cycles",
+            "steps_per_cycle",
+            "ramp_steps",
+            "normal",
+            "shear",
+            "bulk",
+        ],
+        other => bail!(
+            "invalid history.kind = \"{other}\": must be one of \"file\", \"cycle\", \"harmonic\""
+        ),
+    };
+    let given = [
+        ("file", h.file.is_some()),
+        ("cycles", h.cycles.is_some()),
+        ("steps_per_half", h.steps_per_half.is_some()),
+        ("steps_per_cycle", h.steps_per_cycle.is_some()),
+        ("ramp", h.ramp.is_some()),
+        ("ramp_steps", h.ramp_steps.is_some()),
+        ("normal", h.normal.is_some()),
+        ("shear", h.shear.is_some()),
+        ("bulk", h.bulk.is_some()),
+    ];
+    for (name, present) in given {
+        if present && !used.contains(&name) {
+            bail!(
+                "history.{name} is not used by kind \"{kind}\" (it takes: {})",
+                used.join(", ")
+            );
+        }
+    }
+    let count = |v: Option<usize>, field: &str, what: &str| {
+        v.ok_or_else(|| anyhow!("missing field history.{field}: give {what}"))
+    };
+    Ok(match kind.as_str() {
+        "file" => {
+            let file = h.file.ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file"))?;
+            let path = dir.join(&file);
+            let (rows, lines) = read_history(&path)?;
+            History::from_rows(&rows).map_err(|e| match e {
+                halfplane::Error::InvalidInput {
+                    field,
+                    value,
+                    valid,
+                } if field.starts_with("history row ") => {
+                    let rest = &field["history row ".len()..];
+                    let (row, column) = rest.split_once('.').unwrap_or((rest, "value"));
+                    let line = row
+                        .parse::<usize>()
+                        .ok()
+                        .and_then(|r| lines.get(r.wrapping_sub(1)))
+                        .copied()
+                        .unwrap_or(0);
+                    anyhow!(
+                        "history.file {}, line {line}: {column} = {value}: must be {valid}",
+                        path.display()
+                    )
+                }
+                other => anyhow!("history.file {}: {other}", path.display()),
+            })?
+        }
+        "cycle" => {
+            let c = cycle.ok_or_else(|| {
+                anyhow!("history.kind = \"cycle\" needs the [cycle] section with point1 and point2")
+            })?;
+            let (first, second) = c.as_given();
+            let ramp = match h.ramp.as_deref().unwrap_or("normal-first") {
+                "normal-first" => Ramp::NormalFirst,
+                "proportional" => Ramp::Proportional,
+                other => bail!("invalid history.ramp = \"{other}\": must be \"normal-first\" (P, then Q and sigma) or \"proportional\""),
+            };
+            History::in_phase(
+                first,
+                second,
+                count(h.cycles, "cycles", "the number of cycles >= 1")?,
+                count(
+                    h.steps_per_half,
+                    "steps_per_half",
+                    "increments per half-cycle >= 1",
+                )?,
+                ramp,
+                h.ramp_steps.unwrap_or(20),
+            )?
+        }
+        _ => {
+            let harmonic = |raw: Option<RawHarmonic>, name: &str| -> Result<Harmonic> {
+                let Some(r) = raw else {
+                    return Ok(Harmonic {
+                        mean: 0.0,
+                        amplitude: 0.0,
+                        phase: 0.0,
+                    });
+                };
+                Ok(Harmonic {
+                    mean: r.mean.ok_or_else(|| {
+                        anyhow!("missing field history.{name}.mean: give the mean value")
+                    })?,
+                    amplitude: r.amplitude.unwrap_or(0.0),
+                    phase: r.phase.unwrap_or(0.0),
+                })
+            };
+            if h.normal.is_none() {
+                bail!("missing field history.normal: give {{ mean = P0 > 0, amplitude = ..., phase = degrees }}");
+            }
+            History::harmonic(
+                harmonic(h.normal, "normal")?,
+                harmonic(h.shear, "shear")?,
+                harmonic(h.bulk, "bulk")?,
+                count(h.cycles, "cycles", "the number of cycles >= 1")?,
+                count(
+                    h.steps_per_cycle,
+                    "steps_per_cycle",
+                    "increments per cycle >= 2",
+                )?,
+                h.ramp_steps.unwrap_or(20),
+            )?
+        }
+    })
+}
+
+/// Reads a history CSV with header `normal,shear,bulk`; blank and `#` lines are skipped.
+fn read_history(path: &Path) -> Result<(Vec<[f64; 3]>, Vec<usize>)> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read history.file {}", path.display()))?;
+    let mut rows = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let (_, header) = rows.next().ok_or_else(|| {
+        anyhow!(
+            "history.file {} is empty: it needs a header normal,shear,bulk and rows",
+            path.display()
+        )
+    })?;
+    let names: Vec<String> = header
+        .split(',')
+        .map(|s| s.trim().to_ascii_lowercase())
+        .collect();
+    if names != ["normal", "shear", "bulk"] {
+        bail!(
+            "history.file {}, line 1: header is \"{}\", expected \"normal,shear,bulk\"",
+            path.display(),
+            header.trim()
+        );
+    }
+    let (mut out, mut lines) = (Vec::new(), Vec::new());
+    for (i, line) in rows {
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        if cells.len() != 3 {
+            bail!(
+                "history.file {}, line {}: expected 3 columns (normal,shear,bulk), found {}",
+                path.display(),
+                i + 1,
+                cells.len()
+            );
+        }
+        let mut row = [0.0; 3];
+        for (k, (cell, name)) in cells.iter().zip(["normal", "shear", "bulk"]).enumerate() {
+            row[k] = cell.parse::<f64>().map_err(|_| {
+                anyhow!(
+                    "history.file {}, line {}: {name} = \"{cell}\" is not a number",
+                    path.display(),
+                    i + 1
+                )
+            })?;
+        }
+        out.push(row);
+        lines.push(i + 1);
+    }
+    if out.is_empty() {
+        bail!("history.file {} has a header but no rows", path.display());
+    }
+    Ok((out, lines))
 }
 
 fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {

@@ -540,3 +540,204 @@ pub fn evolve_json(ev: &Evolution) -> serde_json::Result<String> {
     };
     serde_json::to_string_pretty(&report)
 }
+
+pub const MARCH_COLUMNS: &str = "step,normal,shear,bulk,half_width,stick_left,stick_right,stick_intervals,energy_increment,energy,passes";
+
+fn intervals_text(steps: &[[f64; 2]]) -> String {
+    steps
+        .iter()
+        .map(|[l, r]| format!("{l}:{r}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// One CSV row per increment; the stick columns hold the largest stick interval (empty when
+/// none) and `stick_intervals` every interval as `left:right`, space-separated.
+pub fn march_csv(result: &halfplane::march::MarchResult) -> String {
+    let mut o = String::from(MARCH_COLUMNS);
+    o.push('\n');
+    for s in &result.steps {
+        let (l, r) = s
+            .largest_stick()
+            .map_or((String::new(), String::new()), |[l, r]| {
+                (l.to_string(), r.to_string())
+            });
+        let _ = writeln!(
+            o,
+            "{},{},{},{},{},{l},{r},{},{},{},{}",
+            s.step,
+            s.load.normal,
+            s.load.shear,
+            s.load.bulk,
+            s.half_width,
+            intervals_text(&s.stick_intervals),
+            s.energy_increment,
+            s.energy,
+            s.passes
+        );
+    }
+    o
+}
+
+#[derive(Serialize)]
+struct MarchStepRow<'a> {
+    step: usize,
+    normal: f64,
+    shear: f64,
+    bulk: f64,
+    half_width: f64,
+    stick_intervals: &'a [[f64; 2]],
+    largest_stick: Option<[f64; 2]>,
+    energy_increment: f64,
+    energy: f64,
+}
+
+#[derive(Serialize)]
+struct MarchCycleRow {
+    index: usize,
+    energy: f64,
+    max_slip_amplitude: f64,
+}
+
+#[derive(Serialize)]
+struct MarchReport<'a> {
+    cells: usize,
+    cell_width: f64,
+    steps: Vec<MarchStepRow<'a>>,
+    cycles: Vec<MarchCycleRow>,
+    shakedown_cycle: Option<usize>,
+}
+
+/// One JSON object.
+pub fn march_json(result: &halfplane::march::MarchResult) -> serde_json::Result<String> {
+    let report = MarchReport {
+        cells: result.x.len(),
+        cell_width: result.x[1] - result.x[0],
+        steps: result
+            .steps
+            .iter()
+            .map(|s| MarchStepRow {
+                step: s.step,
+                normal: s.load.normal,
+                shear: s.load.shear,
+                bulk: s.load.bulk,
+                half_width: s.half_width,
+                stick_intervals: &s.stick_intervals,
+                largest_stick: s.largest_stick(),
+                energy_increment: s.energy_increment,
+                energy: s.energy,
+            })
+            .collect(),
+        cycles: result
+            .cycles
+            .iter()
+            .map(|c| MarchCycleRow {
+                index: c.index,
+                energy: c.energy,
+                max_slip_amplitude: c.max_slip_amplitude(),
+            })
+            .collect(),
+        shakedown_cycle: result.shakedown_cycle,
+    };
+    serde_json::to_string_pretty(&report)
+}
+
+/// A readable summary.
+pub fn march_table(
+    result: &halfplane::march::MarchResult,
+    history: &halfplane::history::History,
+    tolerance: f64,
+) -> String {
+    let mut o = String::new();
+    let n = result.x.len();
+    let w = result.x[1] - result.x[0];
+    let span = result.x[n - 1] + 0.5 * w;
+    let _ = writeln!(
+        o,
+        "grid         {n} cells over [-{span:.6}, {span:.6}], cell width {w:.6}"
+    );
+    match history.cycles {
+        Some(c) => {
+            let _ = writeln!(
+                o,
+                "history      {} increments: {} of ramp, {} cycles of {}",
+                history.loads.len(),
+                c.first_step,
+                c.count,
+                c.steps_per_cycle
+            );
+        }
+        None => {
+            let _ = writeln!(
+                o,
+                "history      {} increments from the file",
+                history.loads.len()
+            );
+        }
+    }
+    if let Some(last) = result.steps.last() {
+        let _ = writeln!(o, "energy       {:.6e} dissipated in all", last.energy);
+    }
+    if !result.cycles.is_empty() {
+        let _ = writeln!(
+            o,
+            "\n{:>6} {:>14} {:>20}",
+            "cycle", "energy", "max slip amplitude"
+        );
+        for c in &result.cycles {
+            let _ = writeln!(
+                o,
+                "{:>6} {:>14.6e} {:>20.6e}",
+                c.index,
+                c.energy,
+                c.max_slip_amplitude()
+            );
+        }
+        let _ = match result.shakedown_cycle {
+            Some(k) => writeln!(
+                o,
+                "steady cycle: from cycle {k} (cycle {} repeats it within {tolerance})",
+                k + 1
+            ),
+            None => writeln!(
+                o,
+                "steady cycle: not reached (no two consecutive cycles agree within {tolerance})"
+            ),
+        };
+    }
+    let _ = writeln!(
+        o,
+        "\n{:>6} {:>11} {:>11} {:>10} {:>10} {:>11} {:>11} {:>5}",
+        "step", "normal", "shear", "bulk", "a", "stick_left", "stick_right", "runs"
+    );
+    let ends: Vec<usize> = match history.cycles {
+        // The ramp end and the end of every half of the last cycle.
+        Some(c) => {
+            let last = c.first_step + (c.count - 1) * c.steps_per_cycle;
+            let mut v = vec![c.first_step];
+            v.extend((1..=4).map(|q| last + q * c.steps_per_cycle / 4));
+            v
+        }
+        None => result.steps.iter().map(|s| s.step).collect(),
+    };
+    for s in result.steps.iter().filter(|s| ends.contains(&s.step)) {
+        let (l, r) = s
+            .largest_stick()
+            .map_or(("-".into(), "-".into()), |[l, r]| {
+                (format!("{l:.6}"), format!("{r:.6}"))
+            });
+        let _ = writeln!(
+            o,
+            "{:>6} {:>11.4} {:>11.4} {:>10.4} {:>10.6} {:>11} {:>11} {:>5}",
+            s.step,
+            s.load.normal,
+            s.load.shear,
+            s.load.bulk,
+            s.half_width,
+            l,
+            r,
+            s.stick_intervals.len()
+        );
+    }
+    o
+}

@@ -263,7 +263,7 @@ impl Marcher {
                     iterations: self.options.max_passes,
                 });
             }
-            if !self.cells.iter().any(|c| *c == Cell::Stick) {
+            if !self.cells.contains(&Cell::Stick) {
                 // All contact cells were flagged to slip while |Q| < fP: restart from full stick.
                 for c in self.cells.iter_mut().filter(|c| matches!(c, Cell::Slip(_))) {
                     *c = Cell::Stick;
@@ -580,4 +580,77 @@ pub fn march(
         cycles,
         shakedown_cycle,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Friction, Material, Profile};
+
+    #[test]
+    fn several_stick_runs_are_solved_exactly_by_pcg() {
+        // Two stick runs couple through the kernel; PCG (run-exact preconditioner) must agree with
+        // dense elimination of G_SS to 1e-10 relative (its stopping rule is 1e-13 on the residual).
+        let contact = Contact::new(
+            Profile::hertz(50.0).unwrap(),
+            Material::new(200_000.0, 0.3).unwrap(),
+            Friction::new(0.6).unwrap(),
+        );
+        let mut m = Marcher::new(
+            &contact,
+            1.0,
+            &MarchOptions {
+                cells: 64,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let stick: Vec<usize> = (5..20).chain(31..52).collect();
+        for (i, c) in m.cells.iter_mut().enumerate() {
+            *c = if stick.contains(&i) {
+                Cell::Stick
+            } else {
+                Cell::Slip(1.0)
+            };
+        }
+        for i in 0..64 {
+            m.rhs[i] = if stick.contains(&i) {
+                (i as f64 * 0.7).sin() + 0.3
+            } else {
+                0.0
+            };
+        }
+        m.solve_stick(&Rhs::Vector, 1).unwrap();
+        // Dense reference from the kernel's definition.
+        let w = m.width;
+        let scale = 4.0;
+        let f = |t: f64| {
+            if t == 0.0 {
+                0.0
+            } else {
+                t * (t.abs() / scale).ln() - t
+            }
+        };
+        let g = |k: usize| -(f((k as f64 + 0.5) * w) - f((k as f64 - 0.5) * w));
+        let matrix = stick
+            .iter()
+            .map(|&i| stick.iter().map(|&j| g(i.abs_diff(j))).collect())
+            .collect();
+        let b: Vec<f64> = stick.iter().map(|&i| m.rhs[i]).collect();
+        let z = toeplitz::tests::dense_solve(matrix, &b);
+        let size = z.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+        for (k, &i) in stick.iter().enumerate() {
+            assert!(
+                (m.u[i] - z[k]).abs() < 1e-10 * size,
+                "cell {i}: {} vs {}",
+                m.u[i],
+                z[k]
+            );
+        }
+        assert!(m
+            .u
+            .iter()
+            .enumerate()
+            .all(|(i, v)| stick.contains(&i) || *v == 0.0));
+    }
 }

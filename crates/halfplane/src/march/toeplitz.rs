@@ -71,13 +71,16 @@ impl Fft {
     }
 }
 
+/// An FFT plan with the spectra of a generator's x and y.
+type Spectra = (Fft, Vec<Complex<f64>>, Vec<Complex<f64>>);
+
 /// `T_n^{-1}` for one n.
 struct Generator {
     n: usize,
     x: Vec<f64>,
     x0: f64,
     /// For n >= DIRECT_BELOW: spectra of x and y zero-padded to the FFT size (>= 2n).
-    spectra: Option<(Fft, Vec<Complex<f64>>, Vec<Complex<f64>>)>,
+    spectra: Option<Spectra>,
 }
 
 /// A symmetric positive definite Toeplitz matrix of order N, given by its first row.
@@ -104,7 +107,7 @@ impl Toeplitz {
         let mut f = vec![1.0 / row[0]];
         for k in 1..n {
             let e: f64 = (0..k).map(|j| row[k - j] * f[j]).sum();
-            if !(e.abs() < 1.0) || row[0] <= 0.0 {
+            if e.is_nan() || e.abs() >= 1.0 || row[0] <= 0.0 {
                 return Err(Error::NoConvergence {
                     what: "Levinson recursion (kernel not positive definite)",
                     iterations: k,
@@ -275,15 +278,13 @@ fn step_down(x: &mut Vec<f64>, e: f64) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    /// Dense Gaussian elimination with partial pivoting, as an independent reference.
-    fn dense_solve(row: &[f64], b: &[f64]) -> Vec<f64> {
+    /// Dense Gaussian elimination with partial pivoting: the independent reference for the
+    /// Toeplitz and PCG solves.
+    pub(in crate::march) fn dense_solve(mut a: Vec<Vec<f64>>, b: &[f64]) -> Vec<f64> {
         let n = b.len();
-        let mut a: Vec<Vec<f64>> = (0..n)
-            .map(|i| (0..n).map(|j| row[i.abs_diff(j)]).collect())
-            .collect();
         let mut b = b.to_vec();
         for c in 0..n {
             let p = (c..n)
@@ -291,10 +292,11 @@ mod tests {
                 .unwrap();
             a.swap(c, p);
             b.swap(c, p);
+            let pivot = a[c].clone();
             for r in c + 1..n {
-                let f = a[r][c] / a[c][c];
-                for k in c..n {
-                    a[r][k] -= f * a[c][k];
+                let f = a[r][c] / pivot[c];
+                for (x, y) in a[r][c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= f * y;
                 }
                 b[r] -= f * b[c];
             }
@@ -304,6 +306,12 @@ mod tests {
             x[i] = (b[i] - (i + 1..n).map(|k| a[i][k] * x[k]).sum::<f64>()) / a[i][i];
         }
         x
+    }
+
+    fn toeplitz_matrix(row: &[f64], n: usize) -> Vec<Vec<f64>> {
+        (0..n)
+            .map(|i| (0..n).map(|j| row[i.abs_diff(j)]).collect())
+            .collect()
     }
 
     fn log_row(n: usize) -> Vec<f64> {
@@ -330,7 +338,7 @@ mod tests {
             let b: Vec<f64> = (0..n).map(|i| ((i * 7 + 3) % 11) as f64 - 4.0).collect();
             let mut z = vec![0.0; n];
             t.solve(&b, &mut z);
-            let exact = dense_solve(&row, &b);
+            let exact = dense_solve(toeplitz_matrix(&row, n), &b);
             let scale = exact.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             for (a, e) in z.iter().zip(&exact) {
                 assert!((a - e).abs() < 1e-11 * scale, "n = {n}: {a} vs {e}");
