@@ -326,3 +326,44 @@ fn dissipation_is_non_negative_and_zero_without_slip() {
     );
     assert!(r.steps.last().unwrap().energy > 0.0);
 }
+
+#[test]
+fn toeplitz_and_dense_solvers_agree() {
+    // Two independent linear-algebra routes through the same discrete problem: the stick zones
+    // must be identical and the energies agree to rounding (1e-9 relative).
+    use halfplane::march::LinearSolver;
+    let c = contact(Profile::flat_rounded(0.3, RADIUS).unwrap());
+    let (p1, p2) = theory_cycle().as_given();
+    let history = History::in_phase(p1, p2, 1, 20, Ramp::Proportional, 10).unwrap();
+    let fast = march(
+        &c,
+        &history,
+        &MarchOptions {
+            cells: 160,
+            ..Default::default()
+        },
+        |_, _| {},
+    )
+    .unwrap();
+    let dense = march(
+        &c,
+        &history,
+        &MarchOptions {
+            cells: 160,
+            solver: LinearSolver::Dense,
+            ..Default::default()
+        },
+        |_, _| {},
+    )
+    .unwrap();
+    for (a, b) in fast.steps.iter().zip(&dense.steps) {
+        assert_eq!(a.stick_intervals, b.stick_intervals, "step {}", a.step);
+        assert!(
+            (a.energy - b.energy).abs() <= 1e-9 * b.energy.abs().max(1e-30),
+            "step {}: {} vs {}",
+            a.step,
+            a.energy,
+            b.energy
+        );
+    }
+}

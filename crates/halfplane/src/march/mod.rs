@@ -31,16 +31,31 @@ use crate::normal::Contact;
 use std::f64::consts::PI;
 use toeplitz::Toeplitz;
 
+/// How the stick cells' linear system is solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LinearSolver {
+    /// Exact Toeplitz inverse per stick run (Gohberg-Semencul, FFT) and FFT products:
+    /// O(N log N) per pass. The default.
+    #[default]
+    Toeplitz,
+    /// The classical dense route: the N x N kernel matrix, products in O(N^2) and a Cholesky
+    /// factorisation of the stick block in O(n^3) per pass. For comparison and cross-checks.
+    Dense,
+}
+
 /// Solver parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MarchOptions {
+    /// Linear solver; default [`LinearSolver::Toeplitz`].
+    pub solver: LinearSolver,
     /// Cells across the largest contact of the history; default 400 (stick boundaries within
     /// 0.3% of the contact width, see `docs/convergence.md`).
     pub cells: usize,
     /// Active-set passes allowed per increment; default 200 (a few are typical).
     pub max_passes: usize,
     /// A cell counts as slipping when its slip increment exceeds this fraction of `A f P`;
-    /// default 1e-10 (rounding in the displacement is ~1e-15 of it).
+    /// default 1e-10 (rounding in the displacement is ~1e-15 of it). Stick cells may exceed the
+    /// friction limit by 1e-9 of `f p_max` before they are made to slip.
     pub slip_tolerance: f64,
     /// Cycles repeat when their slip ranges and energies agree to this fraction; default 1e-3.
     pub shakedown_tolerance: f64,
@@ -49,6 +64,7 @@ pub struct MarchOptions {
 impl Default for MarchOptions {
     fn default() -> Self {
         Self {
+            solver: LinearSolver::Toeplitz,
             cells: 400,
             max_passes: 200,
             slip_tolerance: 1e-10,
@@ -119,6 +135,8 @@ pub struct Marcher {
     width: f64,
     x: Vec<f64>,
     kernel: Toeplitz,
+    /// Row-major N x N kernel for [`LinearSolver::Dense`].
+    dense: Option<Vec<f64>>,
     step: usize,
     load: LoadPoint,
     energy: f64,
@@ -166,7 +184,17 @@ impl Marcher {
             let k = k as f64;
             -(antiderivative((k + 0.5) * width) - antiderivative((k - 0.5) * width))
         });
-        let kernel = Toeplitz::new(row.collect())?;
+        let row: Vec<f64> = row.collect();
+        let dense = (options.solver == LinearSolver::Dense).then(|| {
+            let mut m = vec![0.0; n * n];
+            for i in 0..n {
+                for j in 0..n {
+                    m[i * n + j] = row[i.abs_diff(j)];
+                }
+            }
+            m
+        });
+        let kernel = Toeplitz::new(row)?;
         let zeros = vec![0.0; n];
         Ok(Self {
             contact: contact.clone(),
@@ -176,6 +204,7 @@ impl Marcher {
             width,
             x,
             kernel,
+            dense,
             step: 0,
             load: LoadPoint {
                 normal: 0.0,
@@ -253,6 +282,10 @@ impl Marcher {
         let d_sigma = load.bulk - self.load.bulk;
         let c_disp = self.compliance / PI;
         let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal;
+        // A stick cell starts to slip only when its traction exceeds the limit by more than
+        // rounding. Cells can sit exactly at the limit without slipping (THEORY.md); with a
+        // relative test, rounding pushed such cells over one at a time (190 passes where 5 do).
+        let traction_tolerance = 1e-9 * f * self.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
         let q_old_sum: f64 = self.traction.iter().sum();
         let mut passes = 0;
         loop {
@@ -277,7 +310,7 @@ impl Marcher {
                     Cell::Stick => 0.0,
                 };
             }
-            self.kernel.apply(&self.known, &mut self.work);
+            apply(&mut self.kernel, &self.dense, &self.known, &mut self.work);
             for i in 0..n {
                 self.rhs[i] = if self.cells[i] == Cell::Stick {
                     -self.work[i] - 0.25 * PI * d_sigma * self.x[i]
@@ -298,7 +331,7 @@ impl Marcher {
                         0.0
                     };
             }
-            self.kernel.apply(&self.dq, &mut self.work);
+            apply(&mut self.kernel, &self.dense, &self.dq, &mut self.work);
             let mut changed = false;
             for i in 0..n {
                 let s = -c_disp * (self.work[i] + 0.25 * PI * d_sigma * self.x[i] + c);
@@ -307,7 +340,7 @@ impl Marcher {
                     Cell::Stick => {
                         self.slip_increment[i] = 0.0;
                         let q = self.traction[i] + self.dq[i];
-                        if q.abs() > f * self.pressure[i] * (1.0 + 1e-12) {
+                        if q.abs() > f * self.pressure[i] + traction_tolerance {
                             self.cells[i] = Cell::Slip(q.signum());
                             changed = true;
                         }
@@ -381,7 +414,9 @@ impl Marcher {
                 .collect(),
         };
         out.iter_mut().for_each(|v| *v = 0.0);
-        let result = if runs.len() == 1 {
+        let result = if let Some(g) = &self.dense {
+            dense_stick_solve(g, &self.cells, &b, &mut out, step)
+        } else if runs.len() == 1 {
             let (s, e) = runs[0];
             self.kernel.solve(&b[s..e], &mut out[s..e]);
             Ok(())
@@ -451,6 +486,69 @@ impl Marcher {
 enum Rhs {
     Vector,
     Ones,
+}
+
+/// `y = G v`, by FFT or by the dense matrix.
+fn apply(kernel: &mut Toeplitz, dense: &Option<Vec<f64>>, v: &[f64], y: &mut [f64]) {
+    match dense {
+        None => kernel.apply(v, y),
+        Some(g) => {
+            let n = v.len();
+            for (i, yi) in y.iter_mut().enumerate() {
+                *yi = g[i * n..(i + 1) * n]
+                    .iter()
+                    .zip(v)
+                    .map(|(a, b)| a * b)
+                    .sum();
+            }
+        }
+    }
+}
+
+/// Cholesky solve of `G_SS z = b` over all stick cells (the dense route).
+fn dense_stick_solve(
+    g: &[f64],
+    cells: &[Cell],
+    b: &[f64],
+    z: &mut [f64],
+    step: usize,
+) -> Result<()> {
+    let n_all = cells.len();
+    let s: Vec<usize> = (0..n_all).filter(|&i| cells[i] == Cell::Stick).collect();
+    let n = s.len();
+    let mut l = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..=i {
+            let mut sum = g[s[i] * n_all + s[j]];
+            for k in 0..j {
+                sum -= l[i * n + k] * l[j * n + k];
+            }
+            if i == j {
+                if sum <= 0.0 {
+                    return Err(Error::ActiveSet {
+                        step,
+                        iterations: 0,
+                    });
+                }
+                l[i * n + i] = sum.sqrt();
+            } else {
+                l[i * n + j] = sum / l[j * n + j];
+            }
+        }
+    }
+    let mut y: Vec<f64> = s.iter().map(|&i| b[i]).collect();
+    for i in 0..n {
+        let sum: f64 = (0..i).map(|k| l[i * n + k] * y[k]).sum();
+        y[i] = (y[i] - sum) / l[i * n + i];
+    }
+    for i in (0..n).rev() {
+        let sum: f64 = (i + 1..n).map(|k| l[k * n + i] * y[k]).sum();
+        y[i] = (y[i] - sum) / l[i * n + i];
+    }
+    for (k, &i) in s.iter().enumerate() {
+        z[i] = y[k];
+    }
+    Ok(())
 }
 
 /// Maximal runs `[start, end)` of stick cells.

@@ -1,0 +1,183 @@
+//! End-to-end tests of `halfplane march`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_halfplane"))
+        .args(args)
+        .output()
+        .expect("run halfplane")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("halfplane-march-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
+    let case = examples().join("march-cycle.toml");
+    let o = run(&["march", case.to_str().unwrap(), "--csv"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    let mut lines = out.lines();
+    assert!(lines
+        .next()
+        .unwrap()
+        .starts_with("step,normal,shear,bulk,half_width,stick_left,stick_right"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 300, "30 ramp + 3 cycles of 90 increments");
+    let last = &rows[299];
+    // 400 cells over a2 = 0.90059: a cell is 0.0045; THEORY.md's stick zone [-0.66607, 0.68123].
+    let (l, r): (f64, f64) = (last[5].parse().unwrap(), last[6].parse().unwrap());
+    assert!(
+        (l + 0.66607).abs() < 0.0045 && (r - 0.68123).abs() < 0.0045,
+        "[{l}, {r}]"
+    );
+    assert!(
+        o.stderr.is_empty(),
+        "no progress bar when stderr is not a terminal: {}",
+        text(&o.stderr)
+    );
+}
+
+#[test]
+fn json_reports_cycles_and_shakedown() {
+    let case = examples().join("march-harmonic.toml");
+    let o = run(&["march", case.to_str().unwrap(), "--json", "--cells", "200"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_str(&text(&o.stdout)).unwrap();
+    assert_eq!(v["cells"], 200);
+    assert_eq!(v["cycles"].as_array().unwrap().len(), 3);
+    assert_eq!(v["steps"].as_array().unwrap().len(), 380);
+    // Out of phase, the first cycle differs from the steady cycle that follows.
+    assert_eq!(v["shakedown_cycle"], 2);
+    let e: Vec<f64> = v["cycles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["energy"].as_f64().unwrap())
+        .collect();
+    assert!(e[0] > e[1] && (e[1] - e[2]).abs() < 1e-3 * e[1], "{e:?}");
+}
+
+#[test]
+fn fields_directory_holds_every_increment_and_the_slip_amplitude() {
+    let dir = scratch("fields");
+    let case = examples().join("march-history.toml");
+    let o = run(&[
+        "march",
+        case.to_str().unwrap(),
+        "--fields",
+        dir.to_str().unwrap(),
+        "--cells",
+        "100",
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let first = std::fs::read_to_string(dir.join("step_00001.csv")).unwrap();
+    assert!(first.starts_with("x,pressure,traction,slip,slip_increment\n"));
+    assert_eq!(first.lines().count(), 101);
+    assert!(dir.join("step_00050.csv").exists() && !dir.join("step_00051.csv").exists());
+    // The file history has no cycles, so no slip-amplitude file.
+    assert!(!dir.join("slip_amplitude.csv").exists());
+    let dir = scratch("fields-cycle");
+    let case = examples().join("march-cycle.toml");
+    let o = run(&[
+        "march",
+        case.to_str().unwrap(),
+        "--fields",
+        dir.to_str().unwrap(),
+        "--cells",
+        "50",
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let amp = std::fs::read_to_string(dir.join("slip_amplitude.csv")).unwrap();
+    assert!(amp.starts_with("x,cycle_1,cycle_2,cycle_3\n"));
+}
+
+const BASE: &str = r#"
+[material]
+youngs_modulus = 200000.0
+poisson_ratio = 0.3
+[friction]
+coefficient = 0.6
+[profile]
+kind = "hertz"
+radius = 50.0
+"#;
+
+fn case_with(name: &str, history: &str, csv: Option<&str>) -> PathBuf {
+    let dir = scratch(name);
+    if let Some(c) = csv {
+        std::fs::write(dir.join("h.csv"), c).unwrap();
+    }
+    let path = dir.join("case.toml");
+    std::fs::write(&path, format!("{BASE}{history}")).unwrap();
+    path
+}
+
+#[test]
+fn bad_histories_and_solver_settings_are_clear_errors() {
+    let file = "[history]\nfile = \"h.csv\"\n";
+    let cases: Vec<(&str, String, Option<&str>, &[&str])> = vec![
+        ("no-history", String::new(), None, &["[history]"]),
+        ("zero-cells", format!("{file}[solver]\ncells = 0\n"), Some("normal,shear,bulk\n1000,0,0\n"), &["solver.cells", ">= 8"]),
+        ("nan-row", file.into(), Some("normal,shear,bulk\n1000,0,0\nnan,0,0\n"), &["line 3", "normal", "finite"]),
+        ("p-zero", file.into(), Some("normal,shear,bulk\n1000,0,0\n0,0,0\n"), &["line 3", "normal", "> 0"]),
+        ("empty", file.into(), Some(""), &["empty"]),
+        ("header-only", file.into(), Some("normal,shear,bulk\n"), &["no rows"]),
+        ("columns", file.into(), Some("normal,shear,bulk\n1000,0\n"), &["line 2", "3 columns"]),
+        ("text", file.into(), Some("normal,shear,bulk\n1000,x,0\n"), &["line 2", "shear", "not a number"]),
+        ("slides", file.into(), Some("normal,shear,bulk\n1000,0,0\n1000,300,0\n1000,650,0\n"), &["step 3", "slides"]),
+        ("missing-file", "[history]\nfile = \"absent.csv\"\n".into(), None, &["history.file", "absent.csv"]),
+        ("kind", "[history]\nkind = \"sawtooth\"\n".into(), None, &["history.kind", "\"cycle\""]),
+        ("cycle-without-points", "[history]\nkind = \"cycle\"\ncycles = 2\nsteps_per_half = 10\n".into(), None, &["[cycle]"]),
+        ("harmonic-p", "[history]\nkind = \"harmonic\"\ncycles = 1\nsteps_per_cycle = 10\nnormal = { mean = 100.0, amplitude = 200.0 }\n".into(), None, &["history.normal.amplitude", "P stays > 0"]),
+    ];
+    for (name, history, csv, needles) in cases {
+        let path = case_with(name, &history, csv);
+        let o = run(&["march", path.to_str().unwrap()]);
+        let err = text(&o.stderr);
+        assert!(
+            !o.status.success(),
+            "{name} should fail: {}",
+            text(&o.stdout)
+        );
+        assert!(!err.contains("panicked"), "{name}: {err}");
+        for needle in needles {
+            assert!(
+                err.contains(needle),
+                "{name}: error does not mention {needle:?}: {err}"
+            );
+        }
+    }
+    let path = case_with("cells-flag", file, Some("normal,shear,bulk\n1000,0,0\n"));
+    let o = run(&["march", path.to_str().unwrap(), "--cells", "3"]);
+    assert!(
+        !o.status.success() && text(&o.stderr).contains("solver.cells"),
+        "{}",
+        text(&o.stderr)
+    );
+    let o = run(&[
+        "march",
+        path.to_str().unwrap(),
+        "--fields",
+        "/proc/halfplane-cannot-write",
+    ]);
+    assert!(
+        !o.status.success() && text(&o.stderr).contains("--fields"),
+        "{}",
+        text(&o.stderr)
+    );
+}

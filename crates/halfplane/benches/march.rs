@@ -1,0 +1,65 @@
+//! Time marching through a ramp and three in-phase cycles (THEORY.md's Hertz cycle: 30 ramp + 270
+//! cycle increments = 300), by cell count and linear solver.
+//! Run: `cargo bench -p halfplane --bench march`.
+
+use divan::black_box;
+use halfplane::history::{History, Ramp};
+use halfplane::march::{march, LinearSolver, MarchOptions};
+use halfplane::{Contact, Friction, LoadPoint, Material, Profile};
+
+fn main() {
+    divan::main();
+}
+
+fn case(profile: Profile) -> (Contact, History) {
+    let contact = Contact::new(
+        profile,
+        Material::new(200_000.0, 0.3).unwrap(),
+        Friction::new(0.6).unwrap(),
+    );
+    let p1 = LoadPoint::new("p1", 1000.0, -250.0, -20.0).unwrap();
+    let p2 = LoadPoint::new("p2", 1400.0, 250.0, 20.0).unwrap();
+    (
+        contact,
+        History::in_phase(p1, p2, 3, 45, Ramp::NormalFirst, 15).unwrap(),
+    )
+}
+
+fn run(contact: &Contact, history: &History, cells: usize, solver: LinearSolver) {
+    let r = march(
+        black_box(contact),
+        black_box(history),
+        &MarchOptions {
+            cells,
+            solver,
+            ..Default::default()
+        },
+        |_, _| {},
+    )
+    .unwrap();
+    black_box(r);
+}
+
+#[divan::bench(args = [100, 250, 500, 1000, 2000], sample_count = 5, sample_size = 1)]
+fn hertz_toeplitz(b: divan::Bencher, cells: usize) {
+    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
+}
+
+#[divan::bench(args = [100, 250, 500, 1000], sample_count = 3, sample_size = 1)]
+fn hertz_dense(b: divan::Bencher, cells: usize) {
+    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    b.bench(|| run(&c, &h, cells, LinearSolver::Dense));
+}
+
+#[divan::bench(args = [1000], sample_count = 5, sample_size = 1)]
+fn flat_rounded_toeplitz(b: divan::Bencher, cells: usize) {
+    let (c, h) = case(Profile::flat_rounded(0.3, 50.0).unwrap());
+    b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
+}
+
+#[divan::bench(args = [8000], sample_count = 1, sample_size = 1)]
+fn hertz_toeplitz_large(b: divan::Bencher, cells: usize) {
+    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
+}
