@@ -5,7 +5,7 @@ mod case;
 mod report;
 
 use anyhow::Result;
-use clap::{Parser, Subcommand};
+use clap::{Parser, Subcommand, ValueEnum};
 use halfplane::{asymptotic, evolution, march, steady, SteadyOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::Write;
@@ -65,6 +65,56 @@ enum Command {
         #[arg(long)]
         cells: Option<usize>,
     },
+    /// Draws a figure as SVG or PNG (by the output file name).
+    Plot {
+        /// Which figure.
+        figure: FigureKind,
+        /// Case file (TOML); the figure says which sections it needs.
+        case: PathBuf,
+        /// Output file, ending in .svg or .png.
+        #[arg(long, short)]
+        output: PathBuf,
+        /// evolution: points per half-cycle.
+        #[arg(long, default_value_t = 41)]
+        points: usize,
+        /// evolution: overlay the time-marching stick zone (needs [history] kind = "cycle").
+        #[arg(long)]
+        march: bool,
+        /// march-fields: increments to draw, comma-separated (default: 1/4, 1/2, 3/4 and the end
+        /// of the last cycle, or the last increment).
+        #[arg(long, value_delimiter = ',')]
+        steps: Vec<usize>,
+        /// slip-map: friction coefficients, one panel each.
+        #[arg(long, value_delimiter = ',', default_values_t = [0.3, 0.6])]
+        frictions: Vec<f64>,
+        /// slip-map: P2/P1 values.
+        #[arg(long, value_delimiter = ',', default_values_t = [1.0, 1.2, 1.5])]
+        ratios: Vec<f64>,
+        /// slip-map: dsigma/P1 values (1/mm), dsigma = sigma1 - sigma2.
+        #[arg(long, value_delimiter = ',', default_values_t = [0.0, 0.02, 0.05])]
+        tensions: Vec<f64>,
+        /// slip-map: P1 (N/mm); default the smaller P of [cycle], or 1000.
+        #[arg(long)]
+        normal: Option<f64>,
+        /// march figures: cells (overrides [solver] cells).
+        #[arg(long)]
+        cells: Option<usize>,
+    },
+}
+
+/// The figures `halfplane plot` draws.
+#[derive(Clone, Copy, ValueEnum)]
+enum FigureKind {
+    /// P-Q trajectory with friction lines and the P-S trajectories of both edges (needs [cycle]).
+    LoadSpace,
+    /// Right-edge slip zone against dQ/(f P0), the paper's Figure 5 (uses [material], [profile]).
+    SlipMap,
+    /// Contact edges and stick boundaries over a cycle, the paper's Figure 6 (needs [cycle]).
+    Evolution,
+    /// Shear traction and slip along x at chosen increments (needs [history]).
+    MarchFields,
+    /// Stick intervals against increment number (needs [history]).
+    MarchZones,
 }
 
 fn run(cli: Cli) -> Result<()> {
@@ -166,6 +216,106 @@ fn run(cli: Cli) -> Result<()> {
                     report::march_table(&result, &history, options.shakedown_tolerance)
                 );
             }
+        }
+        Command::Plot {
+            figure,
+            case,
+            output,
+            points,
+            march: overlay,
+            steps,
+            frictions,
+            ratios,
+            tensions,
+            normal,
+            cells,
+        } => {
+            let case = case::load(&case)?;
+            let march_options = |case: &case::Case| {
+                let mut o = case.solver;
+                if let Some(n) = cells {
+                    o.cells = n;
+                }
+                o
+            };
+            let fig = match figure {
+                FigureKind::LoadSpace => {
+                    halfplane_plot::load_space_figure(&case.contact, &case.cycle()?)?
+                }
+                FigureKind::SlipMap => {
+                    let p1 = normal.unwrap_or_else(|| {
+                        case.cycle
+                            .map_or(1000.0, |c| c.low.normal.min(c.high.normal))
+                    });
+                    if !(p1.is_finite() && p1 > 0.0) {
+                        anyhow::bail!("invalid --normal = {p1}: must be a finite number > 0");
+                    }
+                    let map = halfplane_plot::SlipMap {
+                        normal: p1,
+                        frictions,
+                        ratios,
+                        tensions,
+                        samples: 60,
+                    };
+                    halfplane_plot::slip_map_figure(&case.contact, &map)?
+                }
+                FigureKind::Evolution => {
+                    let cycle = case.cycle()?;
+                    let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
+                    let marched = if overlay {
+                        let history = case.history()?;
+                        let result = march::march(
+                            &case.contact,
+                            &history,
+                            &march_options(&case),
+                            |_, _| {},
+                        )?;
+                        Some(halfplane_plot::MarchedCycle::last_cycle(&result, &history)?)
+                    } else {
+                        None
+                    };
+                    halfplane_plot::evolution_figure(&ev, marched.as_ref())
+                }
+                FigureKind::MarchFields | FigureKind::MarchZones => {
+                    let history = case.history()?;
+                    let n = history.loads.len();
+                    let wanted = if steps.is_empty() {
+                        match history.cycles {
+                            Some(c) => {
+                                let last = c.first_step + (c.count - 1) * c.steps_per_cycle;
+                                (1..=4).map(|q| last + q * c.steps_per_cycle / 4).collect()
+                            }
+                            None => vec![n],
+                        }
+                    } else {
+                        steps
+                    };
+                    if let Some(bad) = wanted.iter().find(|&&k| k == 0 || k > n) {
+                        anyhow::bail!(
+                            "invalid --steps value {bad}: the history has increments 1 to {n}"
+                        );
+                    }
+                    let mut recorder = halfplane_plot::FieldRecorder {
+                        steps: wanted,
+                        kept: Vec::new(),
+                    };
+                    let f = case.contact.friction.value();
+                    let result = march::march(
+                        &case.contact,
+                        &history,
+                        &march_options(&case),
+                        |r, fields| recorder.observe(r.step, fields, f),
+                    )?;
+                    match figure {
+                        FigureKind::MarchFields => {
+                            halfplane_plot::march_fields_figure(&recorder.kept)
+                        }
+                        _ => halfplane_plot::march_zones_figure(&result),
+                    }
+                }
+            };
+            halfplane_plot::write(&fig, &output)?;
+            eprintln!("wrote {}", output.display());
         }
     }
     Ok(())

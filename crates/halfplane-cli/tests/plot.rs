@@ -1,0 +1,196 @@
+//! End-to-end tests of `halfplane plot`: every figure from a bundled example, and bad requests.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn example(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples")
+        .join(name)
+        .to_str()
+        .unwrap()
+        .to_string()
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_halfplane"))
+        .args(args)
+        .output()
+        .expect("run halfplane")
+}
+
+fn out(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("halfplane-cli-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn every_figure_is_written_with_its_series() {
+    let cases: [(&str, &str, &[&str], &[&str]); 5] = [
+        (
+            "load-space",
+            "hertz.toml",
+            &[],
+            &[
+                "trajectory",
+                "friction lines ±fP",
+                "point 1",
+                "left edge S = Q + πaσ/4",
+                "normal load P (N/mm)",
+            ],
+        ),
+        (
+            "slip-map",
+            "hertz.toml",
+            &["--ratios", "1,1.2"],
+            &[
+                "f = 0.3",
+                "f = 0.6",
+                "P2/P1 = 1.2, Δσ/P1 = 0.02",
+                "ΔQ/(f P0)",
+            ],
+        ),
+        (
+            "evolution",
+            "march-cycle.toml",
+            &["--march", "--cells", "100"],
+            &[
+                "contact edge",
+                "stick boundary (exact)",
+                "stick boundary (asymptotic)",
+                "stick boundary (time marching)",
+                "right edge: a and n",
+            ],
+        ),
+        (
+            "march-fields",
+            "march-cycle.toml",
+            &["--steps", "100,150", "--cells", "100"],
+            &[
+                "q, step 100",
+                "slip, step 150",
+                "±f p, step 100",
+                "traction q (MPa)",
+            ],
+        ),
+        (
+            "march-zones",
+            "march-history.toml",
+            &["--cells", "100"],
+            &["contact edges ±a", "stick", "increment"],
+        ),
+    ];
+    for (figure, case, extra, needles) in cases {
+        let path = out(&format!("{figure}.svg"));
+        let case_path = example(case);
+        let mut args = vec![
+            "plot",
+            figure,
+            case_path.as_str(),
+            "-o",
+            path.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = run(&args);
+        assert!(o.status.success(), "{figure}: {}", stderr(&o));
+        let svg = std::fs::read_to_string(&path).unwrap();
+        for n in needles {
+            assert!(svg.contains(n), "{figure}: {n:?} not in the SVG");
+        }
+    }
+    let png = out("map.png");
+    let o = run(&[
+        "plot",
+        "load-space",
+        &example("hertz.toml"),
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+}
+
+#[test]
+fn bad_plot_requests_are_clear_errors() {
+    let o = run(&[
+        "plot",
+        "pie-chart",
+        &example("hertz.toml"),
+        "-o",
+        out("x.svg").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("invalid value 'pie-chart'") && stderr(&o).contains("load-space"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "plot",
+        "load-space",
+        &example("hertz.toml"),
+        "-o",
+        "/nonexistent-dir/x.svg",
+    ]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("cannot write /nonexistent-dir/x.svg"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "plot",
+        "load-space",
+        &example("hertz.toml"),
+        "-o",
+        out("x.gif").to_str().unwrap(),
+    ]);
+    assert!(
+        !o.status.success() && stderr(&o).contains(".svg or .png"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "plot",
+        "march-fields",
+        &example("march-history.toml"),
+        "--steps",
+        "999",
+        "-o",
+        out("y.svg").to_str().unwrap(),
+    ]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("increments 1 to 50"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "plot",
+        "march-zones",
+        &example("hertz.toml"),
+        "-o",
+        out("z.svg").to_str().unwrap(),
+    ]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("[history]"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&[
+        "plot",
+        "evolution",
+        &example("march-history.toml"),
+        "-o",
+        out("e.svg").to_str().unwrap(),
+    ]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("[cycle]"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!stderr(&o).contains("panicked"));
+}
