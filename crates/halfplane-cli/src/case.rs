@@ -109,6 +109,19 @@ impl Case {
     }
 }
 
+/// Rejects fields that `kind` does not use, so a typo or a leftover never passes silently.
+fn reject_unused(section: &str, kind: &str, used: &[&str], given: &[(&str, bool)]) -> Result<()> {
+    for (name, present) in given {
+        if *present && !used.contains(name) {
+            bail!(
+                "{section}.{name} is not used by kind \"{kind}\" (it takes: {})",
+                used.join(", ")
+            );
+        }
+    }
+    Ok(())
+}
+
 fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
     value.ok_or_else(|| anyhow!("missing field {field}: give {what}"))
 }
@@ -228,14 +241,7 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
         ("shear", h.shear.is_some()),
         ("bulk", h.bulk.is_some()),
     ];
-    for (name, present) in given {
-        if present && !used.contains(&name) {
-            bail!(
-                "history.{name} is not used by kind \"{kind}\" (it takes: {})",
-                used.join(", ")
-            );
-        }
-    }
+    reject_unused("history", &kind, used, &given)?;
     let count = |v: Option<usize>, field: &str, what: &str| {
         v.ok_or_else(|| anyhow!("missing field history.{field}: give {what}"))
     };
@@ -397,14 +403,7 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
         ("file", p.file.is_some()),
         ("kinks", p.kinks.is_some()),
     ];
-    for (name, present) in given {
-        if present && !used.contains(&name) {
-            bail!(
-                "profile.{name} is not used by kind \"{kind}\" (it takes: {})",
-                used.join(", ")
-            );
-        }
-    }
+    reject_unused("profile", &kind, used, &given)?;
     Ok(match kind.as_str() {
         "hertz" => Profile::hertz(required(
             p.radius,

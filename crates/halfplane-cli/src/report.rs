@@ -138,6 +138,11 @@ struct AsymptoticZone {
     relative_difference_right: f64,
 }
 
+/// One labelled row of a two-column (point1, point2) table.
+fn row(o: &mut String, label: &str, a: f64, b: f64, note: &str) {
+    let _ = writeln!(o, "{label:<15}{a:>14.6} {b:>14.6}{note}");
+}
+
 fn regime_name(r: &Regime) -> &'static str {
     match r {
         Regime::GrossSliding { .. } => "gross-sliding",
@@ -279,35 +284,29 @@ impl SteadyReport {
             self.profile.kind, self.compliance, self.friction
         );
         let _ = writeln!(o, "               {:>14} {:>14}", "point1", "point2");
-        let _ = writeln!(
-            o,
-            "normal P       {:>14.6} {:>14.6}",
-            p.first.normal, p.second.normal
+        row(&mut o, "normal P", p.first.normal, p.second.normal, "");
+        row(&mut o, "shear Q", p.first.shear, p.second.shear, "");
+        row(&mut o, "bulk sigma", p.first.bulk, p.second.bulk, "");
+        row(
+            &mut o,
+            "|Q|/P",
+            self.criteria.shear_ratio_1,
+            self.criteria.shear_ratio_2,
+            &format!("   (gross sliding when >= f = {})", self.friction),
         );
-        let _ = writeln!(
-            o,
-            "shear Q        {:>14.6} {:>14.6}",
-            p.first.shear, p.second.shear
+        row(
+            &mut o,
+            "half-width a",
+            self.contact.half_width_1,
+            self.contact.half_width_2,
+            "",
         );
-        let _ = writeln!(
-            o,
-            "bulk sigma     {:>14.6} {:>14.6}",
-            p.first.bulk, p.second.bulk
-        );
-        let _ = writeln!(
-            o,
-            "|Q|/P          {:>14.6} {:>14.6}   (gross sliding when >= f = {})",
-            self.criteria.shear_ratio_1, self.criteria.shear_ratio_2, self.friction
-        );
-        let _ = writeln!(
-            o,
-            "half-width a   {:>14.6} {:>14.6}",
-            self.contact.half_width_1, self.contact.half_width_2
-        );
-        let _ = writeln!(
-            o,
-            "K_N            {:>14.6} {:>14.6}",
-            self.contact.normal_intensity_1, self.contact.normal_intensity_2
+        row(
+            &mut o,
+            "K_N",
+            self.contact.normal_intensity_1,
+            self.contact.normal_intensity_2,
+            "",
         );
         let ratio = self
             .criteria
@@ -342,39 +341,39 @@ impl SteadyReport {
         }
         if let Some(s) = &self.slip_zones {
             let _ = writeln!(o, "slip zones     {:>14} {:>14}", "at point1", "at point2");
-            let _ = writeln!(
-                o,
-                "  left         {:>14.6} {:>14.6}",
-                s.left.first, s.left.second
-            );
-            let _ = writeln!(
-                o,
-                "  right        {:>14.6} {:>14.6}",
-                s.right.first, s.right.second
-            );
+            row(&mut o, "  left", s.left.first, s.left.second, "");
+            row(&mut o, "  right", s.right.first, s.right.second, "");
         }
         if let Some(a) = &self.asymptotic {
             let _ = writeln!(o);
             let _ = writeln!(o, "asymptotic (edge) description");
-            let _ = writeln!(
-                o,
-                "  K_T left     {:>14.6} {:>14.6}",
-                a.edges.first.shear_intensity_left, a.edges.second.shear_intensity_left
+            row(
+                &mut o,
+                "  K_T left",
+                a.edges.first.shear_intensity_left,
+                a.edges.second.shear_intensity_left,
+                "",
             );
-            let _ = writeln!(
-                o,
-                "  K_T right    {:>14.6} {:>14.6}",
-                a.edges.first.shear_intensity_right, a.edges.second.shear_intensity_right
+            row(
+                &mut o,
+                "  K_T right",
+                a.edges.first.shear_intensity_right,
+                a.edges.second.shear_intensity_right,
+                "",
             );
-            let _ = writeln!(
-                o,
-                "  S left       {:>14.6} {:>14.6}",
-                a.edges.first.equivalent_shear_left, a.edges.second.equivalent_shear_left
+            row(
+                &mut o,
+                "  S left",
+                a.edges.first.equivalent_shear_left,
+                a.edges.second.equivalent_shear_left,
+                "",
             );
-            let _ = writeln!(
-                o,
-                "  S right      {:>14.6} {:>14.6}",
-                a.edges.first.equivalent_shear_right, a.edges.second.equivalent_shear_right
+            row(
+                &mut o,
+                "  S right",
+                a.edges.first.equivalent_shear_right,
+                a.edges.second.equivalent_shear_right,
+                "",
             );
             let _ = writeln!(
                 o,

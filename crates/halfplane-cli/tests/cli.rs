@@ -1,26 +1,8 @@
 //! End-to-end tests of the `halfplane` binary: bundled examples, output formats and bad input.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn examples() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_halfplane"))
-        .args(args)
-        .output()
-        .expect("run halfplane")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+mod common;
+use common::*;
+use std::path::PathBuf;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let o = run(args);
@@ -125,8 +107,7 @@ fn evolve_csv_has_the_documented_columns() {
 
 /// Writes a case file (with an optional profile table) into a fresh directory.
 fn case_with(name: &str, text: &str, table: Option<&str>) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("halfplane-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch(name);
     if let Some(t) = table {
         std::fs::write(dir.join("p.csv"), t).unwrap();
     }

@@ -1,36 +1,15 @@
 //! End-to-end tests of `halfplane march`.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn examples() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_halfplane"))
-        .args(args)
-        .output()
-        .expect("run halfplane")
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("halfplane-march-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+mod common;
+use common::*;
+use std::path::PathBuf;
 
 #[test]
 fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
     let case = examples().join("march-cycle.toml");
     let o = run(&["march", case.to_str().unwrap(), "--csv"]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let out = text(&o.stdout);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
     let mut lines = out.lines();
     assert!(lines
         .next()
@@ -48,7 +27,7 @@ fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
     assert!(
         o.stderr.is_empty(),
         "no progress bar when stderr is not a terminal: {}",
-        text(&o.stderr)
+        stderr(&o)
     );
 }
 
@@ -56,8 +35,8 @@ fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
 fn json_reports_cycles_and_shakedown() {
     let case = examples().join("march-harmonic.toml");
     let o = run(&["march", case.to_str().unwrap(), "--json", "--cells", "200"]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let v: serde_json::Value = serde_json::from_str(&text(&o.stdout)).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["cells"], 200);
     assert_eq!(v["cycles"].as_array().unwrap().len(), 3);
     assert_eq!(v["steps"].as_array().unwrap().len(), 380);
@@ -84,7 +63,7 @@ fn fields_directory_holds_every_increment_and_the_slip_amplitude() {
         "--cells",
         "100",
     ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let first = std::fs::read_to_string(dir.join("step_00001.csv")).unwrap();
     assert!(first.starts_with("x,pressure,traction,slip,slip_increment\n"));
     assert_eq!(first.lines().count(), 101);
@@ -101,7 +80,7 @@ fn fields_directory_holds_every_increment_and_the_slip_amplitude() {
         "--cells",
         "50",
     ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let amp = std::fs::read_to_string(dir.join("slip_amplitude.csv")).unwrap();
     assert!(amp.starts_with("x,cycle_1,cycle_2,cycle_3\n"));
 }
@@ -148,12 +127,8 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
     for (name, history, csv, needles) in cases {
         let path = case_with(name, &history, csv);
         let o = run(&["march", path.to_str().unwrap()]);
-        let err = text(&o.stderr);
-        assert!(
-            !o.status.success(),
-            "{name} should fail: {}",
-            text(&o.stdout)
-        );
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{name} should fail: {}", stdout(&o));
         assert!(!err.contains("panicked"), "{name}: {err}");
         for needle in needles {
             assert!(
@@ -165,9 +140,9 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
     let path = case_with("cells-flag", file, Some("normal,shear,bulk\n1000,0,0\n"));
     let o = run(&["march", path.to_str().unwrap(), "--cells", "3"]);
     assert!(
-        !o.status.success() && text(&o.stderr).contains("solver.cells"),
+        !o.status.success() && stderr(&o).contains("solver.cells"),
         "{}",
-        text(&o.stderr)
+        stderr(&o)
     );
     let o = run(&[
         "march",
@@ -176,8 +151,8 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
         "/proc/halfplane-cannot-write",
     ]);
     assert!(
-        !o.status.success() && text(&o.stderr).contains("--fields"),
+        !o.status.success() && stderr(&o).contains("--fields"),
         "{}",
-        text(&o.stderr)
+        stderr(&o)
     );
 }

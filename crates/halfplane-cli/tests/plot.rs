@@ -1,32 +1,13 @@
 //! End-to-end tests of `halfplane plot`: every figure from a bundled example, and bad requests.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn example(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-        .to_str()
-        .unwrap()
-        .to_string()
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_halfplane"))
-        .args(args)
-        .output()
-        .expect("run halfplane")
-}
+mod common;
+use common::*;
+use std::path::PathBuf;
 
 fn out(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("halfplane-cli-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::create_dir_all(&dir).expect("output directory");
     dir.join(name)
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 #[test]
