@@ -46,6 +46,7 @@ struct RawHarmonic {
 #[serde(deny_unknown_fields)]
 struct RawSolver {
     cells: Option<usize>,
+    slip_tolerance: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -190,11 +191,19 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         }
     };
     let mut solver = MarchOptions::default();
-    if let Some(cells) = raw.solver.and_then(|s| s.cells) {
-        if cells < 8 {
-            bail!("invalid solver.cells = {cells}: must be a whole number >= 8");
+    if let Some(raw_solver) = raw.solver {
+        if let Some(cells) = raw_solver.cells {
+            if cells < 8 {
+                bail!("invalid solver.cells = {cells}: must be a whole number >= 8");
+            }
+            solver.cells = cells;
         }
-        solver.cells = cells;
+        if let Some(t) = raw_solver.slip_tolerance {
+            if !(t.is_finite() && t > 0.0 && t < 1.0) {
+                bail!("invalid solver.slip_tolerance = {t}: must be a number with 0 < t < 1 (a fraction of A f P)");
+            }
+            solver.slip_tolerance = t;
+        }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.
     let history = match raw.history {

@@ -111,6 +111,12 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
     let file = "[history]\nfile = \"h.csv\"\n";
     let cases: Vec<(&str, String, Option<&str>, &[&str])> = vec![
         ("no-history", String::new(), None, &["[history]"]),
+        (
+            "slip-tolerance",
+            format!("{file}[solver]\nslip_tolerance = 0.0\n"),
+            Some("normal,shear,bulk\n1000,0,0\n"),
+            &["solver.slip_tolerance", "0 < t < 1"],
+        ),
         ("zero-cells", format!("{file}[solver]\ncells = 0\n"), Some("normal,shear,bulk\n1000,0,0\n"), &["solver.cells", ">= 8"]),
         ("nan-row", file.into(), Some("normal,shear,bulk\n1000,0,0\nnan,0,0\n"), &["line 3", "normal", "finite"]),
         ("p-zero", file.into(), Some("normal,shear,bulk\n1000,0,0\n0,0,0\n"), &["line 3", "normal", "> 0"]),
