@@ -247,6 +247,16 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     Ok(state)
 }
 
+/// The error for a segment whose shear range leaves no stick zone: `dQ >= f (P1 + P2)` means the
+/// contact slides (d^2 <= 0 in the Hertz closed form, P_K <= 0 in general).
+fn no_stick_zone(segment: &Segment) -> Error {
+    Error::InvalidInput {
+        field: "shear range dQ of the load segment".into(),
+        value: segment.shear_range,
+        valid: "below f (P1 + P2): a larger range slides rigidly and leaves no stick zone",
+    }
+}
+
 /// Solves the two stick-zone equations for a load segment (THEORY.md "Permanent stick zone";
 /// paper eqs. `consistency_cond` and `tangential_equilibrium`, with `xi = e + d cos(theta)`):
 ///
@@ -273,11 +283,7 @@ pub fn stick_zone(
     if let (Method::Auto, Shape::Hertz { radius }) = (options.method, contact.profile.shape()) {
         let (d, e) =
             closed_form::hertz_stick_zone(a_comp, *radius, f, normal_sum, shear_range, bulk_range)
-                .ok_or(Error::StickZoneOutsideContact {
-                    left: 0.0,
-                    right: 0.0,
-                    smaller_half_width: 0.0,
-                })?;
+                .ok_or_else(|| no_stick_zone(segment))?;
         return Ok((StickZone::from_half_width(d, e), 0));
     }
     let residual = |d: f64, e: f64| -> Result<([f64; 2], [[f64; 2]; 2])> {
@@ -300,11 +306,7 @@ pub fn stick_zone(
         None => {
             let p_k = 0.5 * normal_sum - shear_range / (2.0 * f);
             if p_k <= 0.0 {
-                return Err(Error::StickZoneOutsideContact {
-                    left: 0.0,
-                    right: 0.0,
-                    smaller_half_width: 0.0,
-                });
+                return Err(no_stick_zone(segment));
             }
             (contact.half_width(p_k)?, 0.0)
         }

@@ -304,3 +304,26 @@ fn hertz_closed_form_module_is_the_papers_formula() {
     assert!(rel(e, a_comp * RADIUS * 40.0 / 4.8) < 1e-15);
     assert!(rel(d * d, a_comp * RADIUS / PI * (2400.0 - 500.0 / 0.6)) < 1e-15);
 }
+
+#[test]
+fn a_segment_that_would_slide_has_no_stick_zone() {
+    // dQ >= f (P1 + P2): no stick zone exists; the public solver says so by name.
+    let segment = steady::Segment {
+        normal_sum: 2000.0,
+        shear_range: 1300.0,
+        bulk_range: 0.0,
+    };
+    for method in [Method::Auto, Method::Implicit] {
+        let options = SteadyOptions {
+            method,
+            ..Default::default()
+        };
+        for profile in [
+            Profile::hertz(RADIUS).unwrap(),
+            Profile::flat_rounded(0.3, RADIUS).unwrap(),
+        ] {
+            let err = steady::stick_zone(&contact(profile), &segment, None, &options).unwrap_err();
+            assert!(err.to_string().contains("below f (P1 + P2)"), "{err}");
+        }
+    }
+}
