@@ -6,7 +6,7 @@ use halfplane::history::{Harmonic, History, Ramp};
 use halfplane::march::MarchOptions;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 use serde::Deserialize;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -258,7 +258,8 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
         "file" => {
             let file = h.file.ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file"))?;
             let path = dir.join(&file);
-            let (rows, lines) = read_history(&path)?;
+            let (rows, lines) = read_csv(&path, "history.file", &["normal", "shear", "bulk"])?;
+            let rows: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
             History::from_rows(&rows).map_err(|e| match e {
                 halfplane::Error::InvalidInput {
                     field,
@@ -340,61 +341,6 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
     })
 }
 
-/// Reads a history CSV with header `normal,shear,bulk`; blank and `#` lines are skipped.
-fn read_history(path: &Path) -> Result<(Vec<[f64; 3]>, Vec<usize>)> {
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read history.file {}", path.display()))?;
-    let mut rows = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-    let (_, header) = rows.next().ok_or_else(|| {
-        anyhow!(
-            "history.file {} is empty: it needs a header normal,shear,bulk and rows",
-            path.display()
-        )
-    })?;
-    let names: Vec<String> = header
-        .split(',')
-        .map(|s| s.trim().to_ascii_lowercase())
-        .collect();
-    if names != ["normal", "shear", "bulk"] {
-        bail!(
-            "history.file {}, line 1: header is \"{}\", expected \"normal,shear,bulk\"",
-            path.display(),
-            header.trim()
-        );
-    }
-    let (mut out, mut lines) = (Vec::new(), Vec::new());
-    for (i, line) in rows {
-        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-        if cells.len() != 3 {
-            bail!(
-                "history.file {}, line {}: expected 3 columns (normal,shear,bulk), found {}",
-                path.display(),
-                i + 1,
-                cells.len()
-            );
-        }
-        let mut row = [0.0; 3];
-        for (k, (cell, name)) in cells.iter().zip(["normal", "shear", "bulk"]).enumerate() {
-            row[k] = cell.parse::<f64>().map_err(|_| {
-                anyhow!(
-                    "history.file {}, line {}: {name} = \"{cell}\" is not a number",
-                    path.display(),
-                    i + 1
-                )
-            })?;
-        }
-        out.push(row);
-        lines.push(i + 1);
-    }
-    if out.is_empty() {
-        bail!("history.file {} has a header but no rows", path.display());
-    }
-    Ok((out, lines))
-}
-
 fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
     let kind = p.kind.clone().ok_or_else(|| anyhow!("missing field profile.kind: give one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""))?;
     let used: &[&str] = match kind.as_str() {
@@ -434,7 +380,8 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
         _ => {
             let file = p.file.ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file"))?;
             let path = dir.join(&file);
-            let (x, g, lines) = read_table(&path)?;
+            let (rows, lines) = read_csv(&path, "profile.file", &["x", "g"])?;
+            let (x, g) = rows.iter().map(|r| (r[0], r[1])).unzip();
             Profile::tabulated(x, g, p.kinks.unwrap_or_default()).map_err(|e| match e {
                 halfplane::Error::InvalidTable { row, problem }
                     if row >= 1 && row <= lines.len() =>
@@ -451,18 +398,20 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
     })
 }
 
-/// Reads a CSV with header `x,g`; blank lines and lines starting with `#` are skipped. Returns the
-/// columns and the file line of each data row.
-pub fn read_table(path: &PathBuf) -> Result<(Vec<f64>, Vec<f64>, Vec<usize>)> {
+/// Reads a CSV whose header names `columns`; blank lines and lines starting with `#` are
+/// skipped. Returns the rows and the file line of each (for errors). `field` names the case-file
+/// field that gave the path.
+fn read_csv(path: &Path, field: &str, columns: &[&str]) -> Result<(Vec<Vec<f64>>, Vec<usize>)> {
     let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read profile.file {}", path.display()))?;
-    let mut rows = text
+        .with_context(|| format!("cannot read {field} {}", path.display()))?;
+    let header_text = columns.join(",");
+    let mut lines = text
         .lines()
         .enumerate()
         .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-    let (_, header) = rows.next().ok_or_else(|| {
+    let (at, header) = lines.next().ok_or_else(|| {
         anyhow!(
-            "profile.file {} is empty: it needs a header x,g and rows",
+            "{field} {} is empty: it needs a header {header_text} and rows",
             path.display()
         )
     })?;
@@ -470,36 +419,44 @@ pub fn read_table(path: &PathBuf) -> Result<(Vec<f64>, Vec<f64>, Vec<usize>)> {
         .split(',')
         .map(|s| s.trim().to_ascii_lowercase())
         .collect();
-    if names != ["x", "g"] {
+    if names != columns {
         bail!(
-            "profile.file {}, line 1: header is \"{}\", expected \"x,g\"",
+            "{field} {}, line {}: header is \"{}\", expected \"{header_text}\"",
             path.display(),
+            at + 1,
             header.trim()
         );
     }
-    let (mut x, mut g, mut lines) = (Vec::new(), Vec::new(), Vec::new());
-    for (i, line) in rows {
+    let (mut rows, mut numbers) = (Vec::new(), Vec::new());
+    for (i, line) in lines {
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-        let parse = |s: &str, col: &str| -> Result<f64> {
-            s.parse::<f64>().map_err(|_| {
-                anyhow!(
-                    "profile.file {}, line {}: {col} = \"{s}\" is not a number",
-                    path.display(),
-                    i + 1
-                )
-            })
-        };
-        if cells.len() != 2 {
+        if cells.len() != columns.len() {
             bail!(
-                "profile.file {}, line {}: expected 2 columns (x,g), found {}",
+                "{field} {}, line {}: expected {} columns ({header_text}), found {}",
                 path.display(),
                 i + 1,
+                columns.len(),
                 cells.len()
             );
         }
-        x.push(parse(cells[0], "x")?);
-        g.push(parse(cells[1], "g")?);
-        lines.push(i + 1);
+        let row = cells
+            .iter()
+            .zip(columns)
+            .map(|(cell, name)| {
+                cell.parse::<f64>().map_err(|_| {
+                    anyhow!(
+                        "{field} {}, line {}: {name} = \"{cell}\" is not a number",
+                        path.display(),
+                        i + 1
+                    )
+                })
+            })
+            .collect::<Result<Vec<f64>>>()?;
+        rows.push(row);
+        numbers.push(i + 1);
     }
-    Ok((x, g, lines))
+    if rows.is_empty() {
+        bail!("{field} {} has a header but no rows", path.display());
+    }
+    Ok((rows, numbers))
 }

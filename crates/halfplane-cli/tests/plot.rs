@@ -98,80 +98,47 @@ fn every_figure_is_written_with_its_series() {
 
 #[test]
 fn bad_plot_requests_are_clear_errors() {
-    let o = run(&[
-        "plot",
-        "pie-chart",
-        &example("hertz.toml"),
-        "-o",
-        out("x.svg").to_str().unwrap(),
-    ]);
-    assert!(!o.status.success());
-    assert!(
-        stderr(&o).contains("invalid value 'pie-chart'") && stderr(&o).contains("load-space"),
-        "{}",
-        stderr(&o)
-    );
-    let o = run(&[
-        "plot",
-        "load-space",
-        &example("hertz.toml"),
-        "-o",
-        "/nonexistent-dir/x.svg",
-    ]);
-    assert!(
-        !o.status.success() && stderr(&o).contains("cannot write /nonexistent-dir/x.svg"),
-        "{}",
-        stderr(&o)
-    );
-    let o = run(&[
-        "plot",
-        "load-space",
-        &example("hertz.toml"),
-        "-o",
-        out("x.gif").to_str().unwrap(),
-    ]);
-    assert!(
-        !o.status.success() && stderr(&o).contains(".svg or .png"),
-        "{}",
-        stderr(&o)
-    );
-    let o = run(&[
-        "plot",
-        "march-fields",
-        &example("march-history.toml"),
-        "--steps",
-        "999",
-        "-o",
-        out("y.svg").to_str().unwrap(),
-    ]);
-    assert!(
-        !o.status.success() && stderr(&o).contains("increments 1 to 50"),
-        "{}",
-        stderr(&o)
-    );
-    let o = run(&[
-        "plot",
-        "march-zones",
-        &example("hertz.toml"),
-        "-o",
-        out("z.svg").to_str().unwrap(),
-    ]);
-    assert!(
-        !o.status.success() && stderr(&o).contains("[history]"),
-        "{}",
-        stderr(&o)
-    );
-    let o = run(&[
-        "plot",
-        "evolution",
-        &example("march-history.toml"),
-        "-o",
-        out("e.svg").to_str().unwrap(),
-    ]);
-    assert!(
-        !o.status.success() && stderr(&o).contains("[cycle]"),
-        "{}",
-        stderr(&o)
-    );
-    assert!(!stderr(&o).contains("panicked"));
+    let (hertz, history) = (example("hertz.toml"), example("march-history.toml"));
+    let (gif, svg) = (out("x.gif"), out("y.svg"));
+    let (gif, svg) = (gif.to_str().unwrap(), svg.to_str().unwrap());
+    let cases: [(&[&str], &[&str]); 6] = [
+        (
+            &["plot", "pie-chart", &hertz, "-o", svg],
+            &["invalid value 'pie-chart'", "load-space"],
+        ),
+        (
+            &["plot", "load-space", &hertz, "-o", "/nonexistent-dir/x.svg"],
+            &["cannot write /nonexistent-dir/x.svg"],
+        ),
+        (
+            &["plot", "load-space", &hertz, "-o", gif],
+            &[".svg or .png"],
+        ),
+        (
+            &[
+                "plot",
+                "march-fields",
+                &history,
+                "--steps",
+                "999",
+                "-o",
+                svg,
+            ],
+            &["increments 1 to 50"],
+        ),
+        (&["plot", "march-zones", &hertz, "-o", svg], &["[history]"]),
+        (&["plot", "evolution", &history, "-o", svg], &["[cycle]"]),
+    ];
+    for (args, needles) in cases {
+        let o = run(args);
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{args:?} should fail");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        for n in needles {
+            assert!(
+                err.contains(n),
+                "{args:?}: error does not mention {n:?}: {err}"
+            );
+        }
+    }
 }

@@ -58,7 +58,7 @@ impl Fft {
     fn invert(&mut self, spec: &mut [Complex<f64>], out: &mut [f64]) {
         // A real signal's spectrum has real DC and Nyquist terms; rounding may leave a trace.
         spec[0].im = 0.0;
-        if self.m % 2 == 0 {
+        if self.m.is_multiple_of(2) {
             spec[self.m / 2].im = 0.0;
         }
         self.inverse
