@@ -423,17 +423,6 @@ fn one_edge_slip_rows_of_evolve_agree_with_marching_at_the_slipping_edge() {
 fn paper_steady_state_and_evolution_tabulated_and_power_law() {
     // The other two profile routes through the marching solver: a tabulated flat-rounded punch
     // (spline pieces, kink stated) and a wedge-like power law k = 1.5 (pressure by quadrature).
-    let (x, g) = sampled(
-        |x: f64| {
-            if x <= 0.3 {
-                0.0
-            } else {
-                (x - 0.3).powi(2) / 100.0
-            }
-        },
-        2.0,
-        40,
-    );
-    paper_case(Profile::tabulated(x, g, vec![0.3]).unwrap(), 300);
+    paper_case(flat_rounded_table(0.3, RADIUS), 300);
     paper_case(Profile::power_law(0.02, 1.5).unwrap(), 300);
 }

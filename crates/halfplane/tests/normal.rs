@@ -82,20 +82,9 @@ fn pressure_integrates_to_the_load() {
     // Equilibrium, integral p dx = P(a), with x = a sin(phi) to remove the edge square root. The
     // pressure has (x - b) ln|x - b| terms at +-b, so the test splits there and grades its panels
     // towards the breaks; what remains is the pressure's own error (tier 2: 1e-10).
-    let (x, g) = sampled(
-        |x: f64| {
-            if x <= 0.3 {
-                0.0
-            } else {
-                (x - 0.3).powi(2) / 100.0
-            }
-        },
-        2.0,
-        40,
-    );
     for profile in [
         Profile::flat_rounded(0.3, RADIUS).unwrap(),
-        Profile::tabulated(x, g, vec![0.3]).unwrap(),
+        flat_rounded_table(0.3, RADIUS),
     ] {
         let c = contact(profile);
         let a: f64 = 0.9;

@@ -27,22 +27,6 @@ fn zone(s: &halfplane::SteadyState) -> (f64, f64) {
     (z.left, z.right)
 }
 
-/// A flat-rounded table with the kink at b stated (b and R as the analytic profile).
-fn flat_rounded_table(b: f64, r: f64) -> Profile {
-    let (x, g) = sampled(
-        |x: f64| {
-            if x <= b {
-                0.0
-            } else {
-                (x - b).powi(2) / (2.0 * r)
-            }
-        },
-        2.0,
-        40,
-    );
-    Profile::tabulated(x, g, vec![b]).unwrap()
-}
-
 #[test]
 fn hertz_example_matches_the_independent_marching_check() {
     // THEORY.md quotes 5 significant figures from a separate time-marching computation.

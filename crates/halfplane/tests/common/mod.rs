@@ -83,3 +83,19 @@ pub fn integrate_graded(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
     }
     sum
 }
+
+/// A flat-rounded table with the kink at b stated (b and R as the analytic profile).
+pub fn flat_rounded_table(b: f64, r: f64) -> Profile {
+    let (x, g) = sampled(
+        |x: f64| {
+            if x <= b {
+                0.0
+            } else {
+                (x - b).powi(2) / (2.0 * r)
+            }
+        },
+        2.0,
+        40,
+    );
+    Profile::tabulated(x, g, vec![b]).unwrap()
+}
