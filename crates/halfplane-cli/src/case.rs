@@ -307,20 +307,19 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
         }
         _ => {
             let harmonic = |raw: Option<RawHarmonic>, name: &str| -> Result<Harmonic> {
+                let field = format!("history.{name}");
                 let Some(r) = raw else {
-                    return Ok(Harmonic {
-                        mean: 0.0,
-                        amplitude: 0.0,
-                        phase: 0.0,
-                    });
+                    return Ok(Harmonic::new(&field, 0.0, 0.0, 0.0)?);
                 };
-                Ok(Harmonic {
-                    mean: r.mean.ok_or_else(|| {
-                        anyhow!("missing field history.{name}.mean: give the mean value")
-                    })?,
-                    amplitude: r.amplitude.unwrap_or(0.0),
-                    phase: r.phase.unwrap_or(0.0),
-                })
+                let mean = r.mean.ok_or_else(|| {
+                    anyhow!("missing field history.{name}.mean: give the mean value")
+                })?;
+                Ok(Harmonic::new(
+                    &field,
+                    mean,
+                    r.amplitude.unwrap_or(0.0),
+                    r.phase.unwrap_or(0.0),
+                )?)
             };
             if h.normal.is_none() {
                 bail!("missing field history.normal: give {{ mean = P0 > 0, amplitude = ..., phase = degrees }}");

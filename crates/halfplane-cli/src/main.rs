@@ -182,7 +182,7 @@ fn run(cli: Cli) -> Result<()> {
                     )
                 })?;
             }
-            let bar = ProgressBar::new(history.loads.len() as u64);
+            let bar = ProgressBar::new(history.loads().len() as u64);
             bar.set_style(
                 ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
                     .expect("valid template"),
@@ -245,7 +245,7 @@ fn run(cli: Cli) -> Result<()> {
                 FigureKind::SlipMap => {
                     let p1 = normal.unwrap_or_else(|| {
                         case.cycle
-                            .map_or(1000.0, |c| c.low.normal.min(c.high.normal))
+                            .map_or(1000.0, |c| c.low().normal().min(c.high().normal()))
                     });
                     if !(p1.is_finite() && p1 > 0.0) {
                         anyhow::bail!("invalid --normal = {p1}: must be a finite number > 0");
@@ -278,12 +278,14 @@ fn run(cli: Cli) -> Result<()> {
                 }
                 FigureKind::MarchFields | FigureKind::MarchZones => {
                     let history = case.history()?;
-                    let n = history.loads.len();
+                    let n = history.loads().len();
                     let wanted = if steps.is_empty() {
-                        match history.cycles {
+                        match history.cycles() {
                             Some(c) => {
-                                let last = c.first_step + (c.count - 1) * c.steps_per_cycle;
-                                (1..=4).map(|q| last + q * c.steps_per_cycle / 4).collect()
+                                let last = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
+                                (1..=4)
+                                    .map(|q| last + q * c.steps_per_cycle() / 4)
+                                    .collect()
                             }
                             None => vec![n],
                         }

@@ -189,9 +189,9 @@ impl SteadyReport {
     ) -> anyhow::Result<Self> {
         let (first, second) = steady.cycle.as_given();
         let point = |p: halfplane::LoadPoint| PointReport {
-            normal: p.normal,
-            shear: p.shear,
-            bulk: p.bulk,
+            normal: p.normal(),
+            shear: p.shear(),
+            bulk: p.bulk(),
         };
         let c = &steady.criteria;
         let asymptotic = match (asymptotic, steady.stick_zone, steady.slip_zones) {
@@ -240,7 +240,7 @@ impl SteadyReport {
                 first: point(first),
                 second: point(second),
             },
-            smaller_shear_point: if steady.cycle.swapped {
+            smaller_shear_point: if steady.cycle.swapped() {
                 "point2"
             } else {
                 "point1"
@@ -440,9 +440,9 @@ pub fn evolve_csv(ev: &Evolution) -> String {
             "{},{},{},{},{},{},{},{},{},{},{}",
             p.half,
             p.fraction,
-            p.load.normal,
-            p.load.shear,
-            p.load.bulk,
+            p.load.normal(),
+            p.load.shear(),
+            p.load.bulk(),
             p.half_width,
             p.stick_zone.left,
             p.stick_zone.right,
@@ -478,9 +478,9 @@ pub fn evolve_table(ev: &Evolution) -> String {
             "{:>4} {:>8.4} {:>11.4} {:>11.4} {:>10.4} {:>10.6} {:>11.6} {:>11.6} {:>11.6} {:>11.6}  {}",
             p.half,
             p.fraction,
-            p.load.normal,
-            p.load.shear,
-            p.load.bulk,
+            p.load.normal(),
+            p.load.shear(),
+            p.load.bulk(),
             p.half_width,
             p.stick_zone.left,
             p.stick_zone.right,
@@ -524,9 +524,9 @@ pub fn evolve_json(ev: &Evolution) -> serde_json::Result<String> {
             .map(|p| EvolveRow {
                 half: p.half,
                 fraction: p.fraction,
-                normal: p.load.normal,
-                shear: p.load.shear,
-                bulk: p.load.bulk,
+                normal: p.load.normal(),
+                shear: p.load.shear(),
+                bulk: p.load.bulk(),
                 half_width: p.half_width,
                 stick_left: p.stick_zone.left,
                 stick_right: p.stick_zone.right,
@@ -565,9 +565,9 @@ pub fn march_csv(result: &halfplane::march::MarchResult) -> String {
             o,
             "{},{},{},{},{},{l},{r},{},{},{},{}",
             s.step,
-            s.load.normal,
-            s.load.shear,
-            s.load.bulk,
+            s.load.normal(),
+            s.load.shear(),
+            s.load.bulk(),
             s.half_width,
             intervals_text(&s.stick_intervals),
             s.energy_increment,
@@ -617,9 +617,9 @@ pub fn march_json(result: &halfplane::march::MarchResult) -> serde_json::Result<
             .iter()
             .map(|s| MarchStepRow {
                 step: s.step,
-                normal: s.load.normal,
-                shear: s.load.shear,
-                bulk: s.load.bulk,
+                normal: s.load.normal(),
+                shear: s.load.shear(),
+                bulk: s.load.bulk(),
                 half_width: s.half_width,
                 stick_intervals: &s.stick_intervals,
                 largest_stick: s.largest_stick(),
@@ -655,22 +655,22 @@ pub fn march_table(
         o,
         "grid         {n} cells over [-{span:.6}, {span:.6}], cell width {w:.6}"
     );
-    match history.cycles {
+    match history.cycles() {
         Some(c) => {
             let _ = writeln!(
                 o,
                 "history      {} increments: {} of ramp, {} cycles of {}",
-                history.loads.len(),
-                c.first_step,
-                c.count,
-                c.steps_per_cycle
+                history.loads().len(),
+                c.first_step(),
+                c.count(),
+                c.steps_per_cycle()
             );
         }
         None => {
             let _ = writeln!(
                 o,
                 "history      {} increments from the file",
-                history.loads.len()
+                history.loads().len()
             );
         }
     }
@@ -709,12 +709,12 @@ pub fn march_table(
         "\n{:>6} {:>11} {:>11} {:>10} {:>10} {:>11} {:>11} {:>5}",
         "step", "normal", "shear", "bulk", "a", "stick_left", "stick_right", "runs"
     );
-    let ends: Vec<usize> = match history.cycles {
+    let ends: Vec<usize> = match history.cycles() {
         // The ramp end and the end of every half of the last cycle.
         Some(c) => {
-            let last = c.first_step + (c.count - 1) * c.steps_per_cycle;
-            let mut v = vec![c.first_step];
-            v.extend((1..=4).map(|q| last + q * c.steps_per_cycle / 4));
+            let last = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
+            let mut v = vec![c.first_step()];
+            v.extend((1..=4).map(|q| last + q * c.steps_per_cycle() / 4));
             v
         }
         None => result.steps.iter().map(|s| s.step).collect(),
@@ -729,9 +729,9 @@ pub fn march_table(
             o,
             "{:>6} {:>11.4} {:>11.4} {:>10.4} {:>10.6} {:>11} {:>11} {:>5}",
             s.step,
-            s.load.normal,
-            s.load.shear,
-            s.load.bulk,
+            s.load.normal(),
+            s.load.shear(),
+            s.load.bulk(),
             s.half_width,
             l,
             r,

@@ -50,7 +50,7 @@ pub enum PlotError {
 pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, PlotError> {
     let f = contact.friction.value();
     let (p1, p2) = cycle.as_given();
-    let p_max = 1.15 * p1.normal.max(p2.normal);
+    let p_max = 1.15 * p1.normal().max(p2.normal());
     let friction_lines = |color| {
         vec![
             Series::new(
@@ -67,20 +67,20 @@ pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, Plo
             ),
         ]
     };
-    let ends = |a: LoadPoint, b: LoadPoint| vec![(a.normal, a.shear), (b.normal, b.shear)];
+    let ends = |a: LoadPoint, b: LoadPoint| vec![(a.normal(), a.shear()), (b.normal(), b.shear())];
     let mut pq = friction_lines(3);
     pq.push(Series::new("trajectory", Style::Line, 0, ends(p1, p2)));
     pq.push(Series::new(
         "point 1",
         Style::Points,
         1,
-        vec![(p1.normal, p1.shear)],
+        vec![(p1.normal(), p1.shear())],
     ));
     pq.push(Series::new(
         "point 2",
         Style::Points,
         2,
-        vec![(p2.normal, p2.shear)],
+        vec![(p2.normal(), p2.shear())],
     ));
     let mut ps = friction_lines(3);
     for (edge, name, color) in [
@@ -91,8 +91,8 @@ pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, Plo
             .map(|i| {
                 let x = p1.lerp(&p2, i as f64 / 40.0);
                 Ok((
-                    x.normal,
-                    equivalent_shear(x.shear, x.bulk, contact.half_width(x.normal)?, edge),
+                    x.normal(),
+                    equivalent_shear(x.shear(), x.bulk(), contact.half_width(x.normal())?, edge),
                 ))
             })
             .collect::<Result<Vec<_>, halfplane::Error>>()?;
@@ -226,17 +226,17 @@ impl MarchedCycle {
         result: &MarchResult,
         history: &halfplane::history::History,
     ) -> Result<Self, PlotError> {
-        let c = history.cycles.ok_or_else(|| {
+        let c = history.cycles().ok_or_else(|| {
             PlotError::Request(
                 "the marching overlay needs a cyclic history ([history] kind = \"cycle\")".into(),
             )
         })?;
-        let start = c.first_step + (c.count - 1) * c.steps_per_cycle;
-        let points = (1..=c.steps_per_cycle)
+        let start = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
+        let points = (1..=c.steps_per_cycle())
             .filter_map(|k| {
                 let s = &result.steps[start + k - 1];
                 s.largest_stick()
-                    .map(|[l, r]| (2.0 * k as f64 / c.steps_per_cycle as f64, l, r))
+                    .map(|[l, r]| (2.0 * k as f64 / c.steps_per_cycle() as f64, l, r))
             })
             .collect();
         Ok(Self { points })

@@ -67,14 +67,14 @@ pub struct EdgeState {
 impl EdgeState {
     /// Evaluates the edge quantities at `point`.
     pub fn at(contact: &Contact, point: &LoadPoint) -> Result<Self> {
-        let a = contact.half_width(point.normal)?;
+        let a = contact.half_width(point.normal())?;
         Ok(Self {
             half_width: a,
             normal_intensity: contact.normal_intensity(a)?,
             shear_intensity: [Edge::Left, Edge::Right]
-                .map(|e| shear_intensity(point.shear, point.bulk, a, e)),
+                .map(|e| shear_intensity(point.shear(), point.bulk(), a, e)),
             equivalent_shear: [Edge::Left, Edge::Right]
-                .map(|e| equivalent_shear(point.shear, point.bulk, a, e)),
+                .map(|e| equivalent_shear(point.shear(), point.bulk(), a, e)),
         })
     }
 }
@@ -120,7 +120,7 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
         EdgeState::at(contact, &second)?,
     ];
     // Ranges from the end of smaller Q to the end of larger Q.
-    let (lo, hi) = if cycle.swapped {
+    let (lo, hi) = if cycle.swapped() {
         (edges[1], edges[0])
     } else {
         (edges[0], edges[1])

@@ -3,8 +3,11 @@
 
 use thiserror::Error;
 
-/// Everything that can go wrong in the library.
+/// Everything that can go wrong in the library. Messages state the problem and what would be
+/// valid; they give no advice about any particular front end (the CLI adds its own hints by
+/// matching the variant). New variants may be added, so matches need a wildcard arm.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A physical input is outside its valid range (or not finite).
     #[error("invalid {field} = {value}: must be {valid}")]
@@ -15,6 +18,35 @@ pub enum Error {
         value: f64,
         /// The valid range, in words.
         valid: &'static str,
+    },
+
+    /// A count (cells, increments, points, cycles) is outside its valid range.
+    #[error("invalid {field} = {value}: must be a whole number from {min} to {max}")]
+    InvalidCount {
+        /// Name of the input, as the case file spells it where there is one.
+        field: String,
+        /// The rejected value.
+        value: u64,
+        /// Smallest valid value.
+        min: u64,
+        /// Largest valid value (chosen from memory use and run time).
+        max: u64,
+    },
+
+    /// A generated or tabulated history would have more increments than a run can hold.
+    #[error("the history would have more than {max} increments (from {field}); split the study into shorter runs")]
+    TooManyIncrements {
+        /// The count or product of counts that made it too long.
+        field: String,
+        /// The limit, [`crate::history::MAX_INCREMENTS`].
+        max: usize,
+    },
+
+    /// A table (history, profile) has no data rows.
+    #[error("the {what} table has no rows")]
+    EmptyTable {
+        /// Which table.
+        what: &'static str,
     },
 
     /// A tabulated profile is malformed.
@@ -68,8 +100,7 @@ pub enum Error {
 
     /// Gross sliding at an end of the cycle, where an analysis needs partial slip.
     #[error(
-        "the contact slides at the {point} point: |Q| = {shear:.6} >= f P = {limit:.6}; no steady partial-slip state exists \
-         (`halfplane steady` reports this as the gross-sliding regime)"
+        "the contact slides at the {point} point: |Q| = {shear:.6} >= f P = {limit:.6}; no steady partial-slip state exists"
     )]
     GrossSliding {
         /// "first" or "second", as given.

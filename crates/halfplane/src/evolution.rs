@@ -109,8 +109,8 @@ pub fn evolve(
             } else {
                 "second"
             },
-            shear: p.shear.abs(),
-            limit: contact.friction.value() * p.normal,
+            shear: p.shear().abs(),
+            limit: contact.friction.value() * p.normal(),
         });
     }
     let f = contact.friction.value();
@@ -118,7 +118,7 @@ pub fn evolve(
     let mut warnings = Vec::new();
     for (half, start, end) in [(1u8, first, second), (2u8, second, first)] {
         let start_edges = EdgeState::at(contact, &start)?;
-        let rising = end.shear >= start.shear;
+        let rising = end.shear() >= start.shear();
         let mut guess = None;
         let mut previous: Option<StickZone> = None;
         let mut one_edge = 0;

@@ -4,28 +4,68 @@
 //! Every history starts from zero load (nothing in contact); its first point is reached in one
 //! increment, so generated histories begin with a ramp.
 
-use crate::error::{Error, Result};
+use crate::error::{finite, Error, Result};
 use crate::load::LoadPoint;
 use std::f64::consts::PI;
 
+/// The most increments a history may have. A history is held in memory with one report per
+/// increment (about 100 bytes each, plus the stick intervals), so 10 million increments take a
+/// few GB; and at 400 cells a march takes about 0.1 ms per increment, so longer runs would take
+/// hours. Longer studies are split into several runs.
+pub const MAX_INCREMENTS: usize = 10_000_000;
+
 /// Where the cycles of a history start and how long they are.
+///
+/// Valid by construction (only [`History`] builds one): `steps_per_cycle >= 2`, `count >= 1`,
+/// and the cycles fit in the history.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CycleStructure {
+    first_step: usize,
+    steps_per_cycle: usize,
+    count: usize,
+}
+
+impl CycleStructure {
     /// Index (0-based) of the first increment of the first cycle; the ramp comes before.
-    pub first_step: usize,
+    pub fn first_step(&self) -> usize {
+        self.first_step
+    }
+
     /// Increments per cycle.
-    pub steps_per_cycle: usize,
+    pub fn steps_per_cycle(&self) -> usize {
+        self.steps_per_cycle
+    }
+
     /// Number of cycles.
-    pub count: usize,
+    pub fn count(&self) -> usize {
+        self.count
+    }
+
+    /// The 0-based cycle that increment `k` (0-based) belongs to, if any (`None` in the ramp).
+    pub fn cycle_of(&self, k: usize) -> Option<usize> {
+        let c = k.checked_sub(self.first_step)? / self.steps_per_cycle;
+        (c < self.count).then_some(c)
+    }
+
+    /// True when increment `k` (0-based) is the first of its cycle.
+    pub fn starts_cycle(&self, k: usize) -> bool {
+        self.cycle_of(k).is_some() && (k - self.first_step).is_multiple_of(self.steps_per_cycle)
+    }
+
+    /// True when increment `k` (0-based) is the last of its cycle.
+    pub fn ends_cycle(&self, k: usize) -> bool {
+        self.cycle_of(k).is_some() && (k + 1 - self.first_step).is_multiple_of(self.steps_per_cycle)
+    }
 }
 
 /// A sequence of load points, one per increment.
+///
+/// Valid by construction: at least one and at most [`MAX_INCREMENTS`] loads, each a valid
+/// [`LoadPoint`]; the cycle structure, if any, fits the loads.
 #[derive(Debug, Clone, PartialEq)]
 pub struct History {
-    /// Loads at the end of each increment.
-    pub loads: Vec<LoadPoint>,
-    /// Cycle boundaries, for per-cycle outputs (`None` for an explicit list of rows).
-    pub cycles: Option<CycleStructure>,
+    loads: Vec<LoadPoint>,
+    cycles: Option<CycleStructure>,
 }
 
 /// How an in-phase history reaches its first point from zero load.
@@ -38,46 +78,90 @@ pub enum Ramp {
 }
 
 /// `mean + amplitude sin(2 pi t + phase)`, t in cycles, phase in degrees.
+///
+/// Valid by construction: all three are finite.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Harmonic {
-    /// Mean value.
-    pub mean: f64,
-    /// Amplitude.
-    pub amplitude: f64,
-    /// Phase, degrees.
-    pub phase: f64,
+    mean: f64,
+    amplitude: f64,
+    phase: f64,
 }
 
 impl Harmonic {
+    /// Validates that all three are finite. `name` prefixes the field names in errors (for
+    /// example `history.normal`).
+    pub fn new(name: &str, mean: f64, amplitude: f64, phase: f64) -> Result<Self> {
+        finite(&format!("{name}.mean"), mean)?;
+        finite(&format!("{name}.amplitude"), amplitude)?;
+        finite(&format!("{name}.phase"), phase)?;
+        Ok(Self {
+            mean,
+            amplitude,
+            phase,
+        })
+    }
+
+    /// Mean value.
+    pub fn mean(&self) -> f64 {
+        self.mean
+    }
+
+    /// Amplitude.
+    pub fn amplitude(&self) -> f64 {
+        self.amplitude
+    }
+
+    /// Phase, degrees.
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
+
     /// The value at time `t` (cycles).
     pub fn at(&self, t: f64) -> f64 {
         self.mean + self.amplitude * (2.0 * PI * t + self.phase.to_radians()).sin()
     }
 }
 
-fn whole(field: &str, value: usize, min: usize) -> Result<usize> {
-    if value >= min {
+fn count(field: &str, value: usize, min: usize) -> Result<usize> {
+    if value >= min && value <= MAX_INCREMENTS {
         Ok(value)
     } else {
-        Err(Error::InvalidInput {
+        Err(Error::InvalidCount {
             field: field.into(),
-            value: value as f64,
-            valid: if min == 0 {
-                "a whole number >= 0"
-            } else {
-                "a whole number >= 1"
-            },
+            value: value as u64,
+            min: min as u64,
+            max: MAX_INCREMENTS as u64,
         })
     }
+}
+
+/// The number of increments a generated history would have, checked against
+/// [`MAX_INCREMENTS`]: `parts` lists (count, field) pairs whose sum is the total, where each
+/// count is a product of whole numbers.
+fn total_increments(parts: &[(Option<usize>, &str)]) -> Result<usize> {
+    let mut total = 0usize;
+    for &(part, field) in parts {
+        total = part
+            .and_then(|p| total.checked_add(p))
+            .filter(|&t| t <= MAX_INCREMENTS)
+            .ok_or_else(|| Error::TooManyIncrements {
+                field: field.into(),
+                max: MAX_INCREMENTS,
+            })?;
+    }
+    Ok(total)
 }
 
 impl History {
     /// Explicit rows (validated: finite, P > 0); errors name the row (1-based).
     pub fn from_rows(rows: &[[f64; 3]]) -> Result<Self> {
         if rows.is_empty() {
-            return Err(Error::InvalidTable {
-                row: 0,
-                problem: "the history has no rows".into(),
+            return Err(Error::EmptyTable { what: "history" });
+        }
+        if rows.len() > MAX_INCREMENTS {
+            return Err(Error::TooManyIncrements {
+                field: "history rows".into(),
+                max: MAX_INCREMENTS,
             });
         }
         let loads = rows
@@ -93,6 +177,8 @@ impl History {
 
     /// A ramp of `ramp_steps` increments to `first`, then `cycles` in-phase cycles
     /// first -> second -> first with `steps_per_half` increments per half.
+    ///
+    /// Errors: a count below 1, or a history longer than [`MAX_INCREMENTS`].
     pub fn in_phase(
         first: LoadPoint,
         second: LoadPoint,
@@ -101,29 +187,32 @@ impl History {
         ramp: Ramp,
         ramp_steps: usize,
     ) -> Result<Self> {
-        whole("history.cycles", cycles, 1)?;
-        whole("history.steps_per_half", steps_per_half, 1)?;
-        whole("history.ramp_steps", ramp_steps, 1)?;
-        let zero = LoadPoint {
-            normal: 0.0,
-            shear: 0.0,
-            bulk: 0.0,
+        count("history.cycles", cycles, 1)?;
+        count("history.steps_per_half", steps_per_half, 1)?;
+        count("history.ramp_steps", ramp_steps, 1)?;
+        let ramps = match ramp {
+            Ramp::Proportional => 1,
+            Ramp::NormalFirst => 2,
         };
+        let per_cycle = steps_per_half.checked_mul(2);
+        total_increments(&[
+            (Some(ramps * ramp_steps), "history.ramp_steps"),
+            (
+                per_cycle.and_then(|c| c.checked_mul(cycles)),
+                "history.cycles x 2 history.steps_per_half",
+            ),
+        ])?;
+        let fraction = |i: usize, of: usize| i as f64 / of as f64;
         let mut loads = Vec::new();
         match ramp {
-            Ramp::Proportional => loads
-                .extend((1..=ramp_steps).map(|i| zero.lerp(&first, i as f64 / ramp_steps as f64))),
+            Ramp::Proportional => {
+                loads.extend((1..=ramp_steps).map(|i| first.scaled(fraction(i, ramp_steps))))
+            }
             Ramp::NormalFirst => {
-                let pressed = LoadPoint {
-                    normal: first.normal,
-                    shear: 0.0,
-                    bulk: 0.0,
-                };
+                let pressed = LoadPoint::new("history.ramp", first.normal(), 0.0, 0.0)?;
+                loads.extend((1..=ramp_steps).map(|i| pressed.scaled(fraction(i, ramp_steps))));
                 loads.extend(
-                    (1..=ramp_steps).map(|i| zero.lerp(&pressed, i as f64 / ramp_steps as f64)),
-                );
-                loads.extend(
-                    (1..=ramp_steps).map(|i| pressed.lerp(&first, i as f64 / ramp_steps as f64)),
+                    (1..=ramp_steps).map(|i| pressed.lerp(&first, fraction(i, ramp_steps))),
                 );
             }
         }
@@ -131,7 +220,7 @@ impl History {
         for _ in 0..cycles {
             for (from, to) in [(first, second), (second, first)] {
                 loads.extend(
-                    (1..=steps_per_half).map(|i| from.lerp(&to, i as f64 / steps_per_half as f64)),
+                    (1..=steps_per_half).map(|i| from.lerp(&to, fraction(i, steps_per_half))),
                 );
             }
         }
@@ -147,6 +236,9 @@ impl History {
 
     /// Harmonic P, Q, sigma: a proportional ramp of `ramp_steps` increments to the values at
     /// t = 0, then `cycles` cycles of `steps_per_cycle` increments. P must stay > 0.
+    ///
+    /// Errors: counts below their minimum (`steps_per_cycle >= 2`), a history longer than
+    /// [`MAX_INCREMENTS`], or a normal amplitude that would make P reach zero.
     pub fn harmonic(
         normal: Harmonic,
         shear: Harmonic,
@@ -155,22 +247,16 @@ impl History {
         steps_per_cycle: usize,
         ramp_steps: usize,
     ) -> Result<Self> {
-        whole("history.cycles", cycles, 1)?;
-        whole("history.steps_per_cycle", steps_per_cycle, 2)?;
-        whole("history.ramp_steps", ramp_steps, 1)?;
-        for (name, h) in [
-            ("history.normal", normal),
-            ("history.shear", shear),
-            ("history.bulk", bulk),
-        ] {
-            for (part, v) in [
-                ("mean", h.mean),
-                ("amplitude", h.amplitude),
-                ("phase", h.phase),
-            ] {
-                crate::error::finite(&format!("{name}.{part}"), v)?;
-            }
-        }
+        count("history.cycles", cycles, 1)?;
+        count("history.steps_per_cycle", steps_per_cycle, 2)?;
+        count("history.ramp_steps", ramp_steps, 1)?;
+        let cycle_steps = total_increments(&[
+            (Some(ramp_steps), "history.ramp_steps"),
+            (
+                steps_per_cycle.checked_mul(cycles),
+                "history.cycles x history.steps_per_cycle",
+            ),
+        ])? - ramp_steps;
         if normal.mean - normal.amplitude.abs() <= 0.0 {
             return Err(Error::InvalidInput {
                 field: "history.normal.amplitude".into(),
@@ -178,22 +264,15 @@ impl History {
                 valid: "smaller in magnitude than history.normal.mean, so that P stays > 0",
             });
         }
-        let at = |t: f64| LoadPoint {
-            normal: normal.at(t),
-            shear: shear.at(t),
-            bulk: bulk.at(t),
-        };
-        let zero = LoadPoint {
-            normal: 0.0,
-            shear: 0.0,
-            bulk: 0.0,
-        };
-        let start = at(0.0);
+        let at = |t: f64| LoadPoint::new("history", normal.at(t), shear.at(t), bulk.at(t));
+        let start = at(0.0)?;
         let mut loads: Vec<LoadPoint> = (1..=ramp_steps)
-            .map(|i| zero.lerp(&start, i as f64 / ramp_steps as f64))
+            .map(|i| start.scaled(i as f64 / ramp_steps as f64))
             .collect();
         let first_step = loads.len();
-        loads.extend((1..=cycles * steps_per_cycle).map(|i| at(i as f64 / steps_per_cycle as f64)));
+        for i in 1..=cycle_steps {
+            loads.push(at(i as f64 / steps_per_cycle as f64)?);
+        }
         Ok(Self {
             loads,
             cycles: Some(CycleStructure {
@@ -202,5 +281,118 @@ impl History {
                 count: cycles,
             }),
         })
+    }
+
+    /// Loads at the end of each increment.
+    pub fn loads(&self) -> &[LoadPoint] {
+        &self.loads
+    }
+
+    /// Cycle boundaries, for per-cycle outputs (`None` for an explicit list of rows).
+    pub fn cycles(&self) -> Option<CycleStructure> {
+        self.cycles
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(p: f64, q: f64) -> LoadPoint {
+        LoadPoint::new("point", p, q, 0.0).unwrap()
+    }
+
+    #[test]
+    fn huge_counts_are_errors_not_overflows_or_huge_allocations() {
+        let (a, b) = (point(1000.0, -100.0), point(1200.0, 100.0));
+        let too_long = |r: Result<History>| {
+            matches!(
+                r,
+                Err(Error::TooManyIncrements { .. }) | Err(Error::InvalidCount { .. })
+            )
+        };
+        // steps_per_half * 2 overflows usize; cycles * steps overflows; each alone is too large.
+        assert!(too_long(History::in_phase(
+            a,
+            b,
+            1,
+            usize::MAX / 2 + 1,
+            Ramp::Proportional,
+            1
+        )));
+        assert!(too_long(History::in_phase(
+            a,
+            b,
+            1 << 40,
+            1 << 40,
+            Ramp::Proportional,
+            1
+        )));
+        assert!(too_long(History::in_phase(
+            a,
+            b,
+            1,
+            10,
+            Ramp::NormalFirst,
+            usize::MAX
+        )));
+        assert!(too_long(History::in_phase(
+            a,
+            b,
+            5_000_000,
+            2,
+            Ramp::Proportional,
+            1
+        )));
+        let h = |m: f64| Harmonic::new("history.normal", m, 0.0, 0.0).unwrap();
+        // 2^62 cycles of 4 steps: the product wraps to 0 in u64 arithmetic.
+        assert!(too_long(History::harmonic(
+            h(1000.0),
+            h(0.0),
+            h(0.0),
+            1 << 62,
+            4,
+            1
+        )));
+        assert!(matches!(
+            History::harmonic(h(1000.0), h(0.0), h(0.0), 1, 0, 1),
+            Err(Error::InvalidCount { min: 2, .. })
+        ));
+        // The limit itself is reachable.
+        let longest = History::in_phase(a, b, 1, MAX_INCREMENTS / 2 - 1, Ramp::Proportional, 2);
+        assert_eq!(longest.map(|h| h.loads().len()), Ok(MAX_INCREMENTS));
+    }
+
+    #[test]
+    fn cycle_structure_locates_every_increment() {
+        let history = History::in_phase(
+            point(1000.0, -100.0),
+            point(1200.0, 100.0),
+            3,
+            4,
+            Ramp::NormalFirst,
+            2,
+        )
+        .unwrap();
+        let s = history.cycles().unwrap();
+        assert_eq!((s.first_step(), s.steps_per_cycle(), s.count()), (4, 8, 3));
+        assert_eq!(history.loads().len(), 4 + 24);
+        assert_eq!(s.cycle_of(3), None, "the ramp belongs to no cycle");
+        assert_eq!(s.cycle_of(4), Some(0));
+        assert_eq!(s.cycle_of(27), Some(2));
+        assert_eq!(s.cycle_of(28), None, "past the last cycle");
+        assert!(s.starts_cycle(12) && s.ends_cycle(11) && !s.ends_cycle(12));
+        // Each cycle ends back at point 1, exactly.
+        assert_eq!(history.loads()[11], point(1000.0, -100.0));
+    }
+
+    #[test]
+    fn harmonic_values_must_be_finite() {
+        for bad in [f64::NAN, f64::INFINITY] {
+            assert!(matches!(
+                Harmonic::new("history.shear", 0.0, bad, 0.0),
+                Err(Error::InvalidInput { field, .. }) if field == "history.shear.amplitude"
+            ));
+        }
     }
 }

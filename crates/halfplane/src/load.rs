@@ -8,14 +8,13 @@
 use crate::error::{finite, positive, Result};
 
 /// Normal force P (> 0), shear force Q (force per unit thickness) and bulk tension sigma (stress).
+///
+/// Valid by construction: P is finite and > 0, Q and sigma are finite.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadPoint {
-    /// Normal force per unit thickness P (N/mm), > 0.
-    pub normal: f64,
-    /// Shear force per unit thickness Q (N/mm).
-    pub shear: f64,
-    /// Bulk tension sigma in one body (MPa).
-    pub bulk: f64,
+    normal: f64,
+    shear: f64,
+    bulk: f64,
 }
 
 impl LoadPoint {
@@ -32,26 +31,59 @@ impl LoadPoint {
         })
     }
 
+    /// Normal force per unit thickness P (N/mm), > 0.
+    pub fn normal(&self) -> f64 {
+        self.normal
+    }
+
+    /// Shear force per unit thickness Q (N/mm).
+    pub fn shear(&self) -> f64 {
+        self.shear
+    }
+
+    /// Bulk tension sigma in one body (MPa).
+    pub fn bulk(&self) -> f64 {
+        self.bulk
+    }
+
     /// The point a fraction `t` of the way from `self` to `other` (in-phase loading is a straight
-    /// segment in P-Q-sigma space).
+    /// segment in P-Q-sigma space). `t` is clamped to [0, 1], so the result is valid: P stays a
+    /// weighted mean of two positive values.
     pub fn lerp(&self, other: &LoadPoint, t: f64) -> LoadPoint {
+        let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+        // The weighted-mean form cannot overflow for finite ends and is exact at t = 0 and 1.
+        let mix = |a: f64, b: f64| (1.0 - t) * a + t * b;
         LoadPoint {
-            normal: self.normal + t * (other.normal - self.normal),
-            shear: self.shear + t * (other.shear - self.shear),
-            bulk: self.bulk + t * (other.bulk - self.bulk),
+            normal: mix(self.normal, other.normal),
+            shear: mix(self.shear, other.shear),
+            bulk: mix(self.bulk, other.bulk),
+        }
+    }
+
+    /// The point a fraction `t` in (0, 1] of the way from zero load to `self` (a proportional ramp
+    /// from the unloaded state). `t` is clamped to [tiny, 1] so that P stays > 0.
+    pub fn scaled(&self, t: f64) -> LoadPoint {
+        let t = if t.is_nan() {
+            1.0
+        } else {
+            t.clamp(f64::MIN_POSITIVE, 1.0)
+        };
+        LoadPoint {
+            normal: (t * self.normal).max(f64::MIN_POSITIVE),
+            shear: t * self.shear,
+            bulk: t * self.bulk,
         }
     }
 }
 
 /// An in-phase cycle between two load points, labelled internally by Q.
+///
+/// Valid by construction: [`Cycle::new`] orders the points, so `low().shear() <= high().shear()`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cycle {
-    /// The end with the smaller Q (point 1 of THEORY.md).
-    pub low: LoadPoint,
-    /// The end with the larger Q (point 2 of THEORY.md).
-    pub high: LoadPoint,
-    /// True when the caller's first point is `high` (the points were given in the other order).
-    pub swapped: bool,
+    low: LoadPoint,
+    high: LoadPoint,
+    swapped: bool,
 }
 
 impl Cycle {
@@ -70,6 +102,21 @@ impl Cycle {
                 swapped: true,
             }
         }
+    }
+
+    /// The end with the smaller Q (point 1 of the analysis).
+    pub fn low(&self) -> LoadPoint {
+        self.low
+    }
+
+    /// The end with the larger Q (point 2 of the analysis).
+    pub fn high(&self) -> LoadPoint {
+        self.high
+    }
+
+    /// True when the caller's first point is `high` (the points were given in the other order).
+    pub fn swapped(&self) -> bool {
+        self.swapped
     }
 
     /// `dQ = Q2 - Q1 >= 0`.

@@ -153,9 +153,9 @@ impl Segment {
     /// The segment between `low` (smaller Q) and `high`.
     pub fn between(low: &LoadPoint, high: &LoadPoint) -> Self {
         Self {
-            normal_sum: low.normal + high.normal,
-            shear_range: high.shear - low.shear,
-            bulk_range: low.bulk - high.bulk,
+            normal_sum: low.normal() + high.normal(),
+            shear_range: high.shear() - low.shear(),
+            bulk_range: low.bulk() - high.bulk(),
         }
     }
 }
@@ -169,8 +169,8 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     let f = contact.friction.value();
     let (first, second) = cycle.as_given();
     let half_width = [
-        contact.half_width(first.normal)?,
-        contact.half_width(second.normal)?,
+        contact.half_width(first.normal())?,
+        contact.half_width(second.normal())?,
     ];
     let a_max = half_width[0].max(half_width[1]);
     let a_min = half_width[0].min(half_width[1]);
@@ -179,8 +179,8 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     let bulk_term = PI * a_max * cycle.bulk_range().abs() / 4.0;
     let criteria = Criteria {
         shear_ratio: [
-            first.shear.abs() / first.normal,
-            second.shear.abs() / second.normal,
+            first.shear().abs() / first.normal(),
+            second.shear().abs() / second.normal(),
         ],
         full_stick_ratio: if d_p > 0.0 {
             (d_q + bulk_term) / d_p
@@ -228,7 +228,7 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
             bulk_term,
         });
     }
-    let segment = Segment::between(&cycle.low, &cycle.high);
+    let segment = Segment::between(&cycle.low(), &cycle.high());
     let (zone, iterations) = stick_zone(contact, &segment, None, options)?;
     let (m, n) = (-zone.left, zone.right);
     if !(m > 0.0 && n > 0.0 && m < a_min && n < a_min) {

@@ -15,7 +15,7 @@ fn hertz_evolution_follows_the_partial_path_closed_form() {
     let cycle = theory_cycle();
     let ev = evolve(&c, &cycle, 11, &SteadyOptions::default()).unwrap();
     let ar = c.compliance().value() * RADIUS;
-    let (lo, hi) = (cycle.low, cycle.high);
+    let (lo, hi) = (cycle.low(), cycle.high());
     let mut checked = 0;
     for p in &ev.points {
         if p.state != PointState::PartialSlip {
@@ -23,9 +23,17 @@ fn hertz_evolution_follows_the_partial_path_closed_form() {
         }
         let x = p.load;
         let (sum, dq, ds) = if p.half == 1 {
-            (lo.normal + x.normal, x.shear - lo.shear, lo.bulk - x.bulk)
+            (
+                lo.normal() + x.normal(),
+                x.shear() - lo.shear(),
+                lo.bulk() - x.bulk(),
+            )
         } else {
-            (x.normal + hi.normal, hi.shear - x.shear, x.bulk - hi.bulk)
+            (
+                x.normal() + hi.normal(),
+                hi.shear() - x.shear(),
+                x.bulk() - hi.bulk(),
+            )
         };
         let d = (ar / PI * (sum - dq / 0.6)).sqrt();
         let e = -ar * ds / (8.0 * 0.6);

@@ -186,7 +186,7 @@ fn paper_case(profile: Profile, cells: usize) {
     .unwrap();
     let exact = evolve(&c, &cycle, 5, &SteadyOptions::default()).unwrap();
     let w = r.x[1] - r.x[0];
-    let start = history.cycles.unwrap().first_step + 2 * steps; // second cycle
+    let start = history.cycles().unwrap().first_step() + 2 * steps; // second cycle
     for half in 0..2 {
         for j in 1..=4 {
             let step = &r.steps[start + half * steps + j * steps / 4 - 1];
@@ -398,7 +398,7 @@ fn one_edge_slip_rows_of_evolve_agree_with_marching_at_the_slipping_edge() {
     )
     .unwrap();
     let w = r.x[1] - r.x[0];
-    let start = history.cycles.unwrap().first_step + 40 + 20; // the falling half of cycle 2
+    let start = history.cycles().unwrap().first_step() + 40 + 20; // the falling half of cycle 2
     let mut compared = 0;
     for p in ev.points.iter().filter(|p| p.half == 2) {
         if let PointState::OneEdgeSlip {

@@ -138,7 +138,8 @@ pub struct Marcher {
     /// Row-major N x N kernel for [`LinearSolver::Dense`].
     dense: Option<Vec<f64>>,
     step: usize,
-    load: LoadPoint,
+    /// Bulk tension reached by the last increment (0 before the first).
+    bulk: f64,
     energy: f64,
     pressure: Vec<f64>,
     traction: Vec<f64>,
@@ -206,11 +207,7 @@ impl Marcher {
             kernel,
             dense,
             step: 0,
-            load: LoadPoint {
-                normal: 0.0,
-                shear: 0.0,
-                bulk: 0.0,
-            },
+            bulk: 0.0,
             energy: 0.0,
             pressure: zeros.clone(),
             traction: zeros.clone(),
@@ -247,21 +244,21 @@ impl Marcher {
     pub fn step(&mut self, load: LoadPoint) -> Result<StepReport> {
         let step = self.step + 1;
         let name = format!("history row {step}");
-        let load = LoadPoint::new(&name, load.normal, load.shear, load.bulk)?;
+        let load = LoadPoint::new(&name, load.normal(), load.shear(), load.bulk())?;
         let f = self.friction;
-        if load.shear.abs() >= f * load.normal {
+        if load.shear().abs() >= f * load.normal() {
             return Err(Error::SlidesAtStep {
                 step,
-                shear: load.shear.abs(),
-                limit: f * load.normal,
+                shear: load.shear().abs(),
+                limit: f * load.normal(),
             });
         }
-        let a = self.contact.half_width(load.normal)?;
+        let a = self.contact.half_width(load.normal())?;
         let half_span = self.x[self.x.len() - 1] + 0.5 * self.width;
         if a > half_span * (1.0 + 1e-12) {
             return Err(Error::InvalidInput {
                 field: format!("{name}.normal"),
-                value: load.normal,
+                value: load.normal(),
                 valid: "a load whose contact fits the grid (size the grid from the whole history)",
             });
         }
@@ -279,9 +276,9 @@ impl Marcher {
                 _ => {}
             }
         }
-        let d_sigma = load.bulk - self.load.bulk;
+        let d_sigma = load.bulk() - self.bulk;
         let c_disp = self.compliance / PI;
-        let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal;
+        let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal();
         // A stick cell starts to slip only when its traction exceeds the limit by more than
         // rounding. Cells can sit exactly at the limit without slipping (THEORY.md); with a
         // relative test, rounding pushed such cells over one at a time (190 passes where 5 do).
@@ -318,7 +315,7 @@ impl Marcher {
                     0.0
                 };
             }
-            let target = load.shear / self.width - q_old_sum - self.known.iter().sum::<f64>();
+            let target = load.shear() / self.width - q_old_sum - self.known.iter().sum::<f64>();
             self.solve_stick(&Rhs::Vector, step)?;
             self.solve_stick(&Rhs::Ones, step)?;
             let (su, sv) = (self.u.iter().sum::<f64>(), self.v.iter().sum::<f64>());
@@ -369,7 +366,7 @@ impl Marcher {
         }
         self.energy += energy_increment;
         self.step = step;
-        self.load = load;
+        self.bulk = load.bulk();
         // Kinematic classification: contact cells that did not slip this increment.
         let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
         let mut open: Option<usize> = None;
@@ -609,32 +606,44 @@ pub fn march(
     options: &MarchOptions,
     mut observer: impl FnMut(&StepReport, &Fields),
 ) -> Result<MarchResult> {
-    if history.loads.is_empty() {
+    if history.loads().is_empty() {
         return Err(Error::InvalidTable {
             row: 0,
             problem: "the history has no rows".into(),
         });
     }
-    for (i, p) in history.loads.iter().enumerate() {
-        LoadPoint::new(&format!("history row {}", i + 1), p.normal, p.shear, p.bulk)?;
+    for (i, p) in history.loads().iter().enumerate() {
+        LoadPoint::new(
+            &format!("history row {}", i + 1),
+            p.normal(),
+            p.shear(),
+            p.bulk(),
+        )?;
     }
-    let p_max = history.loads.iter().map(|p| p.normal).fold(0.0, f64::max);
+    let p_max = history
+        .loads()
+        .iter()
+        .map(|p| p.normal())
+        .fold(0.0, f64::max);
     let span = contact.half_width(p_max)?;
     let mut marcher = Marcher::new(contact, span, options)?;
     let n = options.cells;
-    let mut steps = Vec::with_capacity(history.loads.len());
+    let mut steps = Vec::with_capacity(history.loads().len());
     let mut cycles = Vec::new();
     let (mut low, mut high) = (vec![0.0; n], vec![0.0; n]);
     let mut cycle_energy_start = 0.0;
-    for (k, load) in history.loads.iter().enumerate() {
+    for (k, load) in history.loads().iter().enumerate() {
         let cycle_of = |k: usize| {
             history
-                .cycles
-                .and_then(|c| (k >= c.first_step).then(|| (k - c.first_step) / c.steps_per_cycle))
-                .filter(|&c| history.cycles.is_some_and(|s| c < s.count))
+                .cycles()
+                .and_then(|c| {
+                    (k >= c.first_step()).then(|| (k - c.first_step()) / c.steps_per_cycle())
+                })
+                .filter(|&c| history.cycles().is_some_and(|s| c < s.count()))
         };
         if let Some(c) = cycle_of(k) {
-            if k == history.cycles.unwrap().first_step + c * history.cycles.unwrap().steps_per_cycle
+            if k == history.cycles().unwrap().first_step()
+                + c * history.cycles().unwrap().steps_per_cycle()
             {
                 low.copy_from_slice(&marcher.slip);
                 high.copy_from_slice(&marcher.slip);
@@ -648,8 +657,8 @@ pub fn march(
                 low[i] = low[i].min(marcher.slip[i]);
                 high[i] = high[i].max(marcher.slip[i]);
             }
-            let s = history.cycles.unwrap();
-            if k + 1 == s.first_step + (c + 1) * s.steps_per_cycle {
+            let s = history.cycles().unwrap();
+            if k + 1 == s.first_step() + (c + 1) * s.steps_per_cycle() {
                 cycles.push(CycleReport {
                     index: c + 1,
                     energy: marcher.energy - cycle_energy_start,
