@@ -1,10 +1,8 @@
 //! The `halfplane` command: a thin layer that parses arguments, resolves the case file and prints
 //! what the library computes.
 
-mod case;
-mod report;
-
 use anyhow::Result;
+use halfplane_cli::{case, report};
 use clap::{Parser, Subcommand, ValueEnum};
 use halfplane::{asymptotic, evolution, march, steady, SteadyOptions};
 use indicatif::{ProgressBar, ProgressStyle};
