@@ -61,9 +61,9 @@ pub enum Error {
     /// later; the steady-state analysis (and the exact evolution) assume neither.
     #[error(
         "slip at the {edge_name} edge does not keep one direction through half {half} of the cycle: from fraction \
-         {fraction:.6} of that half its stick boundary would move outwards at {boundary_rate:.6} per half-cycle, but \
-         the steady-state analysis needs at most min(0, da/dt) = {limit_rate:.6}: that slip zone does not grow \
-         monotonically (the edge sticks or re-sticks, or keeps slipping in the previous half's direction)",
+         {fraction:.6} of that half its stick boundary would move at {boundary_rate:.6} (outwards positive, length per \
+         half-cycle), but the steady-state analysis needs at most min(0, da/dt) = {limit_rate:.6}: that slip zone would \
+         not grow monotonically (the edge would stick or re-stick, or keep slipping in the previous half's direction)",
         edge_name = .edge.name()
     )]
     SlipReversesInHalf {
