@@ -277,3 +277,92 @@ fn start_of_half_speeds_hold_for_any_profile() {
         );
     }
 }
+
+#[test]
+fn evolve_never_warns_for_a_cycle_that_analyse_accepts() {
+    // The warnings of `evolve` (a stick boundary moving outwards, one edge only slipping) mark
+    // exactly what `analyse` now rejects, so on a sweep of tension ranges through the boundary,
+    // for P rising and falling, accepted partial-slip cycles give none and rejected ones are the
+    // named errors (a stick zone outside the smaller contact is reported first when it is). Without the check the sweep's strong-tension cycles warn (or are wrong).
+    let mut accepted = 0;
+    let mut rejected = 0;
+    for profile in [
+        Profile::hertz(RADIUS).unwrap(),
+        Profile::flat_rounded(0.3, RADIUS).unwrap(),
+        Profile::power_law(0.02, 1.5).unwrap(),
+    ] {
+        let c = contact(profile);
+        for p2 in [700.0, 1400.0] {
+            for k in 0..12 {
+                let s = 25.0 * k as f64;
+                let cycle = Cycle::new(point(1000.0, -250.0, -s), point(p2, 250.0, s));
+                match evolve(&c, &cycle, 21, &SteadyOptions::default()) {
+                    Ok(ev) => {
+                        assert!(
+                            ev.warnings.is_empty(),
+                            "{:?}, P2 {p2}, sigma +-{s}: {:?}",
+                            c.profile.shape(),
+                            ev.warnings
+                        );
+                        accepted += 1;
+                    }
+                    Err(Error::SlipReversesInHalf { .. })
+                    | Err(Error::StickZoneOutsideContact { .. }) => rejected += 1,
+                    Err(e) => panic!("{:?}, P2 {p2}, sigma +-{s}: {e}", c.profile.shape()),
+                }
+            }
+        }
+    }
+    assert!(
+        accepted >= 20 && rejected >= 10,
+        "the sweep must cross the boundary: {accepted} accepted, {rejected} rejected"
+    );
+}
+
+#[test]
+#[ignore = "dense marching (1600 cells, five tension levels, two cycles each): cargo test --release -p halfplane --test validity -- --ignored"]
+fn the_reversal_boundary_is_where_marching_starts_slipping_forward() {
+    // Hertz f = 0.3, sigma +-s: the start-of-half test puts the boundary at s = 268.6. Marching at
+    // 1600 cells and 40 increments per half: below it no cell with x > 0 slips forward in the
+    // falling half and the permanent stick zone agrees within one cell; above it the right edge
+    // slips forward early in the falling half (2 of 40 increments at 275, 9 at 300, 18 at 345).
+    let c = hertz_f03();
+    let steps = 40;
+    for s in [250.0, 265.0, 275.0, 300.0, 345.0] {
+        let cycle = tension_cycle(s);
+        let accepted = steady::analyse(&c, &cycle, &SteadyOptions::default());
+        let (r, start, forward) = march_cycle(&c, &cycle, 1600, steps);
+        let falling = start + steps;
+        let forward_steps = forward[falling..falling + steps]
+            .iter()
+            .filter(|x| x.is_some())
+            .count();
+        match accepted {
+            Ok(state) => {
+                assert!(s < 268.6, "sigma +-{s} accepted beyond the boundary");
+                assert_eq!(
+                    forward_steps, 0,
+                    "sigma +-{s}: forward slip in the falling half"
+                );
+                let z = state.stick_zone.unwrap();
+                let w = r.x[1] - r.x[0];
+                for end in [falling - 1, falling + steps - 1] {
+                    let [l, rr] = r.steps[end].largest_stick().unwrap();
+                    assert!(
+                        (l - z.left).abs() <= w && (rr - z.right).abs() <= w,
+                        "sigma +-{s}: marched [{l:.6}, {rr:.6}] vs [{:.6}, {:.6}], cell {w:.6}",
+                        z.left,
+                        z.right
+                    );
+                }
+            }
+            Err(e) => {
+                assert!(s > 268.6, "sigma +-{s} rejected inside the boundary: {e}");
+                assert!(
+                    forward_steps > 0,
+                    "sigma +-{s} rejected, but marching shows no forward slip in the falling half"
+                );
+            }
+        }
+    }
+}
