@@ -177,7 +177,7 @@ impl Segment {
 /// - at the start of each half, exactly and for any profile: with `a_s` the contact half-width
 ///   there and `dP` the change of P over that half, both edges need
 ///   `dQ -/+ pi a_s dsigma/4 > f |dP|` (`-` at the left edge, `+` at the right); over the
-///   two halves this is `dQ - pi a_max |dsigma|/4 > f |dP1 - P2|`, which contains the paper's
+///   two halves this is `dQ - pi a_max |dsigma|/4 > f |P2 - P1|`, which contains the paper's
 ///   end-point test `dQ > pi a_max |dsigma|/4` as the case `dP = 0`;
 /// - along each half, at 32 evenly spaced points with the exact boundary speeds (implicit
 ///   function theorem on the stick-zone equations), the first failure located by bisection to
@@ -381,7 +381,7 @@ pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOption
         for edge in [Edge::Left, Edge::Right] {
             let sign = if edge == Edge::Left { -1.0 } else { 1.0 };
             let equivalent_shear_range = d_q + sign * PI * a_s * d_sigma / 4.0;
-            if !(equivalent_shear_range > f * d_p.abs()) {
+            if equivalent_shear_range <= f * d_p.abs() {
                 return Err(Error::SlipReversesInHalf {
                     half,
                     edge,
