@@ -353,7 +353,9 @@ impl HalfPath<'_> {
 /// Checks that both slip zones grow monotonically through both halves of a partial-slip cycle,
 /// the condition for the partial-path relation and so the permanent stick zone to be exact (see
 /// [`analyse`], which calls it, and docs/validity.md). Half 1 runs from the first point as given
-/// to the second. Returns [`Error::SlipReversesInHalf`] at the first failure.
+/// to the second. Returns [`Error::SlipReversesInHalf`] at the first failure. Conventions: point 1
+/// is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`, `dsigma = sigma1 - sigma2`, x positive in
+/// the direction of positive Q (so the right edge is `n`, the left `-m`).
 ///
 /// At the start of a half (t = 0, the stick zone is the whole contact `a_s`) the boundary speeds
 /// are exact for any profile: `n' = (f dP - dS_right)/(2 f P'(a_s))`,
