@@ -353,11 +353,30 @@ fn write_amplitudes(path: &std::path::Path, result: &march::MarchResult) -> Resu
     std::fs::write(path, o).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
 }
 
+/// What to do next when a load case is outside the steady-state analysis, chosen by the library's
+/// error variant (never by its text).
+fn hint(error: &anyhow::Error) -> Option<&'static str> {
+    use halfplane::Error;
+    match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
+        Error::SlipReversesInHalf { .. }
+        | Error::StickZoneOutsideContact { .. }
+        | Error::SlipReversal { .. } => Some(
+            "this cycle is outside the steady-state analysis; `halfplane march` (numerical time \
+             marching) has no such restriction: give the case a [history] section with \
+             kind = \"cycle\"",
+        ),
+        _ => None,
+    }
+}
+
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
+            if let Some(h) = hint(&e) {
+                eprintln!("hint: {h}");
+            }
             ExitCode::from(2)
         }
     }

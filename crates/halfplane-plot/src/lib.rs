@@ -138,9 +138,11 @@ pub struct SlipMap {
 /// contact, `(min(a1, a2) - n)/a0` with `a0 = a(P0)`, against `dQ/(f P0)`, one curve per
 /// (P2/P1, dsigma/P1), one panel per friction coefficient. (At the smaller contact the paper's
 /// observation holds that a larger P2/P1 shortens the slip zone, and the curves meet zero
-/// continuously at the full-stick limit.) Cycles are centred on Q = 0 and on sigma = 0.
-/// Points where the analysis does not apply (slip reversal, stick zone outside the contact) are
-/// left out, so curves may stop early.
+/// continuously at the full-stick limit when dsigma = 0.) Cycles are centred on Q = 0 and on
+/// sigma = 0. Points where the analysis does not apply (slip zones that do not grow monotonically
+/// through a half-cycle, stick zone outside the contact) are left out, so curves may stop early;
+/// with tension they stop short of the full-stick limit, since monotone growth needs
+/// `dQ - pi a_max |dsigma|/4 > f |dP|` (`docs/validity.md`).
 pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotError> {
     let mut panels = Vec::new();
     for &f in &map.frictions {

@@ -1,6 +1,7 @@
 //! Typed errors. Every variant carries the offending value and says what would be valid, so a
 //! caller (CLI, Python binding, sweep driver) can report it without string parsing.
 
+use crate::asymptotic::Edge;
 use thiserror::Error;
 
 /// Everything that can go wrong in the library. Messages state the problem and what would be
@@ -71,11 +72,13 @@ pub enum Error {
         table_end: f64,
     },
 
-    /// Bulk tension is large enough to reverse slip at one edge, which the paper's analysis excludes.
+    /// The paper's end-point test `dQ > pi a_max |dsigma|/4` failed. No longer returned by
+    /// `steady::analyse`, whose along-the-half check ([`Error::SlipReversesInHalf`]) contains this
+    /// test as its special case `dP = 0` and is stricter otherwise; kept so that existing code that
+    /// matches on it still compiles.
     #[error(
         "slip reverses at one edge: the shear range dQ = {shear_range:.6} must exceed pi*a_max*|dsigma|/4 = {bulk_term:.6} \
-         for slip to keep one direction at both edges (the paper's assumption); \
-         use `halfplane march`, the numerical time-marching solver, for this load case"
+         for slip to keep one direction at both edges (the paper's assumption)"
     )]
     SlipReversal {
         /// Q2 - Q1 with point 1 the end of smaller Q.
@@ -84,10 +87,47 @@ pub enum Error {
         bulk_term: f64,
     },
 
+    /// Along a half-cycle, the slip zone at one edge stops growing: its stick boundary moves
+    /// outwards, or faster inwards than a receding contact edge (`docs/validity.md`). Material
+    /// would then re-stick, or the edge keep slipping in the previous half's direction and reverse
+    /// later; the steady-state analysis (and the exact evolution) assume neither.
+    #[error(
+        "slip at the {edge_name} edge does not keep one direction through half {half} of the cycle: from fraction \
+         {fraction:.6} of that half its stick boundary would move at {boundary_rate:.6} (outwards positive, length per \
+         half-cycle), but the steady-state analysis needs at most min(0, da/dt) = {limit_rate:.6}: that slip zone would \
+         not grow monotonically (the edge would stick or re-stick, or keep slipping in the previous half's direction)",
+        edge_name = .edge.name()
+    )]
+    SlipReversesInHalf {
+        /// 1: the half from the first point as given to the second; 2: back.
+        half: u8,
+        /// The edge whose slip zone stops growing.
+        edge: Edge,
+        /// Fraction of the half (0 to 1) where it first happens.
+        fraction: f64,
+        /// Outward speed of that stick boundary there, `dn/dt` at the right edge, `dm/dt` at the
+        /// left (stick zone `[-m, n]`, t the fraction of the half), in length per half-cycle.
+        boundary_rate: f64,
+        /// The largest speed allowed, `min(0, da/dt)` (a the contact half-width).
+        limit_rate: f64,
+    },
+
+    /// A load segment whose shear range leaves no stick zone: `dQ >= f (P1 + P2)`.
+    #[error(
+        "no stick zone exists for the load segment: its shear range dQ = {shear_range:.6} is not below f (P1 + P2) = {limit:.6}, \
+         so the contact slides rigidly"
+    )]
+    NoStickZone {
+        /// `dQ = Q2 - Q1`.
+        shear_range: f64,
+        /// `f (P1 + P2)`.
+        limit: f64,
+    },
+
     /// The permanent stick zone found does not lie inside the smaller contact.
     #[error(
         "the stick zone [-m, n] = [{left:.6}, {right:.6}] does not lie inside the smaller contact [-{smaller_half_width:.6}, {smaller_half_width:.6}] \
-         (the paper requires 0 < m, n < min(a1, a2)); use `halfplane march`, the numerical time-marching solver, for this load case"
+         (the analysis requires -min(a1, a2) < -m < n < min(a1, a2); the zone need not contain x = 0)"
     )]
     StickZoneOutsideContact {
         /// -m.
@@ -100,7 +140,8 @@ pub enum Error {
 
     /// Gross sliding at an end of the cycle, where an analysis needs partial slip.
     #[error(
-        "the contact slides at the {point} point: |Q| = {shear:.6} >= f P = {limit:.6}; no steady partial-slip state exists"
+        "the contact slides at the {point} point: |Q| = {shear:.6} >= f P = {limit:.6}; no steady partial-slip state exists \
+         (the steady-state analysis reports this as the gross-sliding regime)"
     )]
     GrossSliding {
         /// "first" or "second", as given.

@@ -2,8 +2,12 @@
 //!
 //! At a point X of a half-cycle, the stick-zone equations hold for the partial path from the last
 //! reversal point to X, labelled by Q (THEORY.md "Slip zones along the cycle, exactly"): on the
-//! half where Q rises, X replaces point 2; where Q falls, X replaces point 1. The zone found is
-//! valid while it lies inside `min(a_start, a_X)`; while it covers the contact the contact sticks.
+//! half where Q rises, X replaces point 2; where Q falls, X replaces point 1. The relation is exact
+//! while both slip zones grow monotonically from the reversal; [`evolve`] calls
+//! [`steady::analyse`], which rejects partial-slip cycles where they do not
+//! ([`Error::SlipReversesInHalf`], derivation in `docs/validity.md`), so for every cycle it
+//! accepts both edges slip from just after each reversal and the stick boundaries only move
+//! inwards.
 
 use crate::asymptotic::{self, Edge, EdgeState};
 use crate::error::{Error, Result};
@@ -19,8 +23,9 @@ pub enum PointState {
     /// Slip at both edges: the exact partial-path result applies.
     PartialSlip,
     /// The two-edge relation puts only one edge in slip. The partial-path equations assume slip at
-    /// both edges, so the slipping edge's boundary shown is approximate here; use
-    /// `halfplane march` for the exact value.
+    /// both edges, so the slipping edge's boundary shown is approximate here (time marching gives
+    /// the exact value). Cannot occur for a cycle that [`steady::analyse`] accepts (its stick
+    /// boundaries stay inside `min(a_start, a_X)` along both halves); kept as a guard.
     OneEdgeSlip {
         /// The edge that slips.
         slipping: Edge,
@@ -51,7 +56,8 @@ pub struct EvolutionPoint {
 pub enum EvolutionWarning {
     /// The stick boundary at `edge` moved outwards between two slipping points of a half: slip
     /// zones do not grow monotonically, so the partial-path relation (which assumes they do) is not
-    /// exact there. Use `halfplane march`.
+    /// exact there. Cannot occur for a cycle that [`steady::analyse`] accepts (it checks exactly
+    /// this along both halves); kept as a guard against a failure between its sample points.
     NonMonotoneSlip {
         /// Half (1 or 2).
         half: u8,
@@ -81,7 +87,9 @@ pub struct Evolution {
 }
 
 /// Evaluates the stick zone at `points_per_half` (>= 2) evenly spaced points of each half-cycle,
-/// ends included. Needs the steady state to be partial slip or full stick.
+/// ends included. Needs the steady state to be partial slip or full stick: the errors of
+/// [`steady::analyse`] (among them [`Error::SlipReversesInHalf`] when the relation would not be
+/// exact) are passed on, and gross sliding is [`Error::GrossSliding`].
 pub fn evolve(
     contact: &Contact,
     cycle: &Cycle,

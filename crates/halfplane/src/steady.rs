@@ -1,10 +1,12 @@
 //! Steady-state analysis of an in-phase cycle (the paper's main result): regime, permanent stick
 //! zone `[-m, n]` and slip-zone extents.
 //!
-//! Conventions (THEORY.md): point 1 is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`,
+//! Conventions: point 1 is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`,
 //! `dsigma = sigma1 - sigma2`, `d = (m + n)/2` (half-width), `e = (n - m)/2` (eccentricity,
-//! positive to the right, x increasing in the direction of positive Q).
+//! positive to the right, x increasing in the direction of positive Q). Which cycles the analysis
+//! applies to, and why, is derived in `docs/validity.md`.
 
+use crate::asymptotic::Edge;
 use crate::closed_form;
 use crate::error::{Error, Result};
 use crate::load::{Cycle, LoadPoint};
@@ -103,7 +105,8 @@ pub struct Criteria {
     pub shear_ratio: [f64; 2],
     /// `(|dQ| + pi a_max |dsigma|/4)/|dP|` (eq. 1; full stick when <= f). Infinite when dP = 0.
     pub full_stick_ratio: f64,
-    /// `pi a_max |dsigma|/4`, the bulk-tension term compared with dQ for slip reversal.
+    /// `pi a_max |dsigma|/4`, the bulk-tension term of eq. (1); partial slip is analysed only when
+    /// `dQ - bulk_term > f |dP|` (see [`analyse`]).
     pub bulk_term: f64,
     /// f.
     pub friction: f64,
@@ -162,9 +165,30 @@ impl Segment {
 
 /// Analyses the steady state of the in-phase cycle: regime, stick zone and slip zones.
 ///
-/// Errors: [`Error::SlipReversal`] when bulk tension would reverse slip at one edge and
-/// [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the smaller contact (both
-/// outside the paper's assumptions: use the time-marching solver).
+/// The partial-slip result (the paper's permanent stick zone `[-m, n]`) is exact only when, in
+/// each half-cycle, both slip zones grow monotonically from the reversal: at a point a fraction t
+/// along a half, the stick zone of the partial path from the reversal point (the same two
+/// equations, [`stick_zone`]) must have boundaries that never move outwards (`dn/dt <= 0`,
+/// `dm/dt <= 0`) and stay inside both the starting and the current contact. Otherwise material
+/// re-sticks, or a receding edge keeps slipping in the previous half's direction and reverses
+/// later in the half, and the result is not exact (`docs/validity.md` derives this and records the
+/// comparison with time marching). Checked here:
+///
+/// - at the start of each half, exactly and for any profile: with `a_s` the contact half-width
+///   there and `dP` the change of P over that half, both edges need
+///   `dQ -/+ pi a_s dsigma/4 > f |dP|` (`-` at the left edge, `+` at the right); over the
+///   two halves this is `dQ - pi a_max |dsigma|/4 > f |P2 - P1|`, which contains the paper's
+///   end-point test `dQ > pi a_max |dsigma|/4` as the case `dP = 0`;
+/// - along each half, at 32 evenly spaced points with the exact boundary speeds (implicit
+///   function theorem on the stick-zone equations), the first failure located by bisection to
+///   1e-10 of the half. For Hertz the start-of-half test alone is sufficient (proved in
+///   `docs/validity.md`).
+///
+/// Errors: [`Error::SlipReversesInHalf`] (with the half, edge and fraction where the slip zone
+/// first stops growing) and [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the
+/// smaller contact, `-min(a1, a2) < -m < n < min(a1, a2)` (it need not contain x = 0). Both
+/// mean that the cycle is outside this analysis; a numerical time-marching solution
+/// ([`crate::march`]) has no such restriction.
 pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Result<SteadyState> {
     let f = contact.friction.value();
     let (first, second) = cycle.as_given();
@@ -222,22 +246,17 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
         });
         return Ok(state);
     }
-    if d_q <= bulk_term {
-        return Err(Error::SlipReversal {
-            shear_range: d_q,
-            bulk_term,
-        });
-    }
     let segment = Segment::between(&cycle.low(), &cycle.high());
     let (zone, iterations) = stick_zone(contact, &segment, None, options)?;
-    let (m, n) = (-zone.left, zone.right);
-    if !(m > 0.0 && n > 0.0 && m < a_min && n < a_min) {
+    if !(-a_min < zone.left && zone.left < zone.right && zone.right < a_min) {
         return Err(Error::StickZoneOutsideContact {
             left: zone.left,
             right: zone.right,
             smaller_half_width: a_min,
         });
     }
+    let (m, n) = (-zone.left, zone.right);
+    check_slip_grows(contact, cycle, options)?;
     state.stick_zone = Some(zone);
     state.slip_zones = Some(SlipZones {
         left: half_width.map(|a| a - m),
@@ -249,12 +268,194 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
 
 /// The error for a segment whose shear range leaves no stick zone: `dQ >= f (P1 + P2)` means the
 /// contact slides (d^2 <= 0 in the Hertz closed form, P_K <= 0 in general).
-fn no_stick_zone(segment: &Segment) -> Error {
-    Error::InvalidInput {
-        field: "shear range dQ of the load segment".into(),
-        value: segment.shear_range,
-        valid: "below f (P1 + P2): a larger range slides rigidly and leaves no stick zone",
+fn no_stick_zone(contact: &Contact, segment: &Segment) -> Error {
+    Error::NoStickZone {
+        shear_range: segment.shear_range,
+        limit: contact.friction.value() * segment.normal_sum,
     }
+}
+
+/// Samples per half-cycle for the along-the-half check of [`check_slip_grows`].
+const SAMPLES_PER_HALF: usize = 32;
+
+/// The partial path of one half-cycle at fraction t: the stick zone, the contact half-width and
+/// the outward speeds `[dm/dt, dn/dt]` of the stick boundaries and `da/dt` of the contact edge.
+struct PathPoint {
+    zone: StickZone,
+    half_width: f64,
+    boundary_rate: [f64; 2],
+    edge_rate: f64,
+}
+
+/// One half-cycle from the reversal point `start` towards `end`, with the cycle's `dQ >= 0` and
+/// `dsigma = sigma1 - sigma2` (point 1 the end of smaller Q).
+///
+/// At fraction t the partial path from `start` is, labelled by Q as the stick-zone equations need
+/// it, the segment with `P1 + P2 = 2 P_start + t (P_end - P_start)`, shear range `t dQ` and
+/// tension range `t dsigma`, on either half (on the rising half the current point replaces point 2,
+/// on the falling half point 1; both give these ranges).
+struct HalfPath<'a> {
+    contact: &'a Contact,
+    start: LoadPoint,
+    normal_change: f64,
+    shear_range: f64,
+    bulk_range: f64,
+    options: &'a SteadyOptions,
+}
+
+impl HalfPath<'_> {
+    fn segment(&self, t: f64) -> Segment {
+        Segment {
+            normal_sum: 2.0 * self.start.normal() + t * self.normal_change,
+            shear_range: t * self.shear_range,
+            bulk_range: t * self.bulk_range,
+        }
+    }
+
+    /// The stick zone at fraction t > 0 and the boundary speeds from the implicit function
+    /// theorem: with `R(d, e; t) = 0` the two stick-zone equations of [`stick_zone`] and `J` their
+    /// exact Jacobian in (d, e), `(d', e') = -J^-1 dR/dt`, where
+    /// `dR1/dt = pi A dsigma/(8f)` and `dR2/dt = pi e dsigma/4 - f (P_end - P_start) + dQ`;
+    /// then `n' = d' + e'`, `m' = d' - e'` (docs/validity.md, "Along the half").
+    fn at(&self, t: f64, guess: Option<(f64, f64)>) -> Result<PathPoint> {
+        let f = self.contact.friction.value();
+        let a_comp = self.contact.compliance().value();
+        let (zone, _) = stick_zone(self.contact, &self.segment(t), guess, self.options)?;
+        let (d, e) = (zone.half_width(), zone.eccentricity());
+        let s = self.contact.profile.stick_integrals(d, e)?;
+        let bulk = t * self.bulk_range;
+        let jac = [
+            [s.j0_d, s.j0_e],
+            [
+                2.0 * f / a_comp * s.j1_d,
+                2.0 * f / a_comp * s.j1_e + PI * bulk / 4.0,
+            ],
+        ];
+        let r_t = [
+            PI * a_comp * self.bulk_range / (8.0 * f),
+            PI * e * self.bulk_range / 4.0 - f * self.normal_change + self.shear_range,
+        ];
+        let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
+        let d_t = -(jac[1][1] * r_t[0] - jac[0][1] * r_t[1]) / det;
+        let e_t = -(-jac[1][0] * r_t[0] + jac[0][0] * r_t[1]) / det;
+        let half_width = self
+            .contact
+            .half_width(self.start.normal() + t * self.normal_change)?;
+        Ok(PathPoint {
+            zone,
+            half_width,
+            boundary_rate: [d_t - e_t, d_t + e_t],
+            edge_rate: self.normal_change / self.contact.load_rate(half_width)?,
+        })
+    }
+}
+
+/// Checks that both slip zones grow monotonically through both halves of a partial-slip cycle,
+/// the condition for the partial-path relation and so the permanent stick zone to be exact (see
+/// [`analyse`], which calls it, and docs/validity.md). Half 1 runs from the first point as given
+/// to the second. Returns [`Error::SlipReversesInHalf`] at the first failure. Conventions: point 1
+/// is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`, `dsigma = sigma1 - sigma2`, x positive in
+/// the direction of positive Q (so the right edge is `n`, the left `-m`).
+///
+/// At the start of a half (t = 0, the stick zone is the whole contact `a_s`) the boundary speeds
+/// are exact for any profile: `n' = (f dP - dS_right)/(2 f P'(a_s))`,
+/// `m' = (f dP - dS_left)/(2 f P'(a_s))` and `a' = dP/P'(a_s)`, with `dP = P_end - P_start`,
+/// `P'(a) = dP/da` and the equivalent-shear ranges `dS_left = dQ - pi a_s dsigma/4`,
+/// `dS_right = dQ + pi a_s dsigma/4`; so `n' <= min(0, a')` exactly when `dS_right >= f |dP|`
+/// (docs/validity.md, "Start of a half"). Along the half `m, n` must be non-increasing and stay
+/// below `min(a_s, a(t))`.
+pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Result<()> {
+    let f = contact.friction.value();
+    let (first, second) = cycle.as_given();
+    let half_width = [
+        contact.half_width(first.normal())?,
+        contact.half_width(second.normal())?,
+    ];
+    let (d_q, d_sigma) = (cycle.shear_range(), cycle.bulk_range());
+    let halves = [
+        (1u8, first, second, half_width[0]),
+        (2u8, second, first, half_width[1]),
+    ];
+    // The start of each half first: exact, and where a failure is most often found.
+    for (half, start, end, a_s) in halves {
+        let d_p = end.normal() - start.normal();
+        let load_rate = contact.load_rate(a_s)?;
+        for edge in [Edge::Left, Edge::Right] {
+            let sign = if edge == Edge::Left { -1.0 } else { 1.0 };
+            let equivalent_shear_range = d_q + sign * PI * a_s * d_sigma / 4.0;
+            if equivalent_shear_range <= f * d_p.abs() {
+                return Err(Error::SlipReversesInHalf {
+                    half,
+                    edge,
+                    fraction: 0.0,
+                    boundary_rate: (f * d_p - equivalent_shear_range) / (2.0 * f * load_rate),
+                    limit_rate: (d_p / load_rate).min(0.0),
+                });
+            }
+        }
+    }
+    for (half, start, end, a_s) in halves {
+        let path = HalfPath {
+            contact,
+            start,
+            normal_change: end.normal() - start.normal(),
+            shear_range: d_q,
+            bulk_range: d_sigma,
+            options,
+        };
+        // Along the half: margins that must stay >= 0, per edge [left, right]:
+        // -(boundary speed), and (min(a_s, a(t)) - boundary)/t.
+        let tolerance = 1e-9 * a_s;
+        let margins = |p: &PathPoint, t: f64| -> [[f64; 2]; 2] {
+            let limit = a_s.min(p.half_width);
+            [
+                [-p.boundary_rate[0], -p.boundary_rate[1]],
+                [(limit + p.zone.left) / t, (limit - p.zone.right) / t],
+            ]
+        };
+        let mut guess = Some((a_s, 0.0));
+        let mut previous_t = 0.0;
+        for k in 1..=SAMPLES_PER_HALF {
+            let t = k as f64 / SAMPLES_PER_HALF as f64;
+            let p = path.at(t, guess)?;
+            guess = Some((p.zone.half_width(), p.zone.eccentricity()));
+            let failing = margins(&p, t);
+            if !failing.iter().flatten().any(|&v| v < -tolerance) {
+                previous_t = t;
+                continue;
+            }
+            // Bisect each failing margin on [previous_t, t] and report the earliest root.
+            let mut first_failure: Option<(f64, usize)> = None;
+            for (kind, edge_index) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+                if failing[kind][edge_index] >= -tolerance {
+                    continue;
+                }
+                let (mut lo, mut hi) = (previous_t, t);
+                while hi - lo > 1e-10 {
+                    let mid = 0.5 * (lo + hi);
+                    let q = path.at(mid, guess)?;
+                    if margins(&q, mid)[kind][edge_index] < -tolerance {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                if first_failure.is_none_or(|(t0, _)| hi < t0) {
+                    first_failure = Some((hi, edge_index));
+                }
+            }
+            let (fraction, edge_index) = first_failure.expect("a failing margin was found");
+            let q = path.at(fraction, guess)?;
+            return Err(Error::SlipReversesInHalf {
+                half,
+                edge: [Edge::Left, Edge::Right][edge_index],
+                fraction,
+                boundary_rate: q.boundary_rate[edge_index],
+                limit_rate: q.edge_rate.min(0.0),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Solves the two stick-zone equations for a load segment (THEORY.md "Permanent stick zone";
@@ -283,7 +484,7 @@ pub fn stick_zone(
     if let (Method::Auto, Shape::Hertz { radius }) = (options.method, contact.profile.shape()) {
         let (d, e) =
             closed_form::hertz_stick_zone(a_comp, *radius, f, normal_sum, shear_range, bulk_range)
-                .ok_or_else(|| no_stick_zone(segment))?;
+                .ok_or_else(|| no_stick_zone(contact, segment))?;
         return Ok((StickZone::from_half_width(d, e), 0));
     }
     let residual = |d: f64, e: f64| -> Result<([f64; 2], [[f64; 2]; 2])> {
@@ -306,7 +507,7 @@ pub fn stick_zone(
         None => {
             let p_k = 0.5 * normal_sum - shear_range / (2.0 * f);
             if p_k <= 0.0 {
-                return Err(no_stick_zone(segment));
+                return Err(no_stick_zone(contact, segment));
             }
             (contact.half_width(p_k)?, 0.0)
         }
