@@ -395,7 +395,7 @@ fn a_receding_edge_that_is_not_rejected_slips_forward() {
     let steps = 20;
     let history = History::in_phase(p1, p2, 2, steps, Ramp::NormalFirst, 10).unwrap();
     let falling = history.cycles().unwrap().first_step() + 2 * steps + steps; // cycle 2
-                                                                          // The solver's own slip threshold (MarchOptions::slip_tolerance, 1e-10 A f P).
+                                                                              // The solver's own slip threshold (MarchOptions::slip_tolerance, 1e-10 A f P).
     let threshold = 1e-10 * c.compliance().value() * 0.6 * 1400.0;
     let mut forward_steps = 0;
     march(

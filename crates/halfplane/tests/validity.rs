@@ -42,7 +42,8 @@ fn march_cycle(
     let (p1, p2) = cycle.as_given();
     let history = History::in_phase(p1, p2, 2, steps, Ramp::NormalFirst, 10).unwrap();
     // The solver's own threshold for "slipping" (MarchOptions::slip_tolerance, default 1e-10 A f P).
-    let threshold = 1e-10 * c.compliance().value() * c.friction.value() * p1.normal().max(p2.normal());
+    let threshold =
+        1e-10 * c.compliance().value() * c.friction.value() * p1.normal().max(p2.normal());
     let mut forward = Vec::new();
     let r = march(
         c,
