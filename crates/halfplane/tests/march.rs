@@ -394,8 +394,8 @@ fn a_receding_edge_that_is_not_rejected_slips_forward() {
     let (p1, p2) = cycle.as_given();
     let steps = 20;
     let history = History::in_phase(p1, p2, 2, steps, Ramp::NormalFirst, 10).unwrap();
-    let falling = history.cycles().unwrap().first_step() + 2 * steps + steps; // cycle 2
-                                                                              // The solver's own slip threshold (MarchOptions::slip_tolerance, 1e-10 A f P).
+    let falling = history.cycles().unwrap().first_step() + 2 * steps + steps;
+    // The falling half of cycle 2. The solver's own slip threshold (MarchOptions::slip_tolerance, 1e-10 A f P).
     let threshold = 1e-10 * c.compliance().value() * 0.6 * 1400.0;
     let mut forward_steps = 0;
     march(
