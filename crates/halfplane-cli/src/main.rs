@@ -2,13 +2,41 @@
 //! what the library computes.
 
 use anyhow::Result;
-use halfplane_cli::{case, report};
 use clap::{Parser, Subcommand, ValueEnum};
 use halfplane::{asymptotic, evolution, march, steady, SteadyOptions};
+use halfplane_cli::{case, report};
 use indicatif::{ProgressBar, ProgressStyle};
-use std::io::Write;
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+/// A failed write to stdout. Kept apart from other errors so that `main` can end quietly when
+/// the reader has gone away (`halfplane march case.toml --csv | head`).
+#[derive(Debug)]
+struct StdoutError(io::Error);
+
+impl std::fmt::Display for StdoutError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "cannot write to stdout: {}", self.0)
+    }
+}
+
+impl std::error::Error for StdoutError {}
+
+/// Writes `text` to stdout and flushes it. `print!` would panic on a closed pipe or a full disk;
+/// this returns the error instead.
+fn emit(text: &str) -> Result<()> {
+    let mut out = io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| StdoutError(e).into())
+}
+
+/// A line on stderr. `eprintln!` would panic when stderr cannot be written (a full disk): the
+/// message is then lost, but the run's outcome and exit code stand.
+fn note(text: &str) {
+    let _ = writeln!(io::stderr().lock(), "{text}");
+}
 
 /// Frictional half-plane contact: steady-state stick zones, slip zones and their evolution.
 #[derive(Parser)]
@@ -129,12 +157,12 @@ fn run(cli: Cli) -> Result<()> {
             let asym_ok = asym.as_ref().and_then(|a| a.as_ref().ok());
             let report = report::SteadyReport::new(&case.contact, &state, asym_ok)?;
             if json {
-                println!("{}", serde_json::to_string_pretty(&report)?);
+                emit(&(serde_json::to_string_pretty(&report)? + "\n"))?;
             } else {
-                print!("{}", report.table(&state));
+                emit(&report.table(&state))?;
             }
             if let Some(Err(e)) = asym {
-                eprintln!("note: no asymptotic estimate: {e}");
+                note(&format!("note: no asymptotic estimate: {e}"));
             }
         }
         Command::Evolve {
@@ -147,15 +175,15 @@ fn run(cli: Cli) -> Result<()> {
             let cycle = case.cycle()?;
             let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
             if csv {
-                print!("{}", report::evolve_csv(&ev));
+                emit(&report::evolve_csv(&ev))?;
             } else if json {
-                println!("{}", report::evolve_json(&ev)?);
+                emit(&(report::evolve_json(&ev)? + "\n"))?;
             } else {
-                print!("{}", report::evolve_table(&ev));
+                emit(&report::evolve_table(&ev))?;
             }
             if !json {
                 for w in report::warnings(&ev) {
-                    eprintln!("{w}");
+                    note(&w);
                 }
             }
         }
@@ -182,8 +210,9 @@ fn run(cli: Cli) -> Result<()> {
             }
             let bar = ProgressBar::new(history.loads().len() as u64);
             bar.set_style(
+                // The template is a constant that parses; a plain bar would do if it did not.
                 ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
-                    .expect("valid template"),
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
             let mut write_error = None;
             let result = march::march(&case.contact, &history, &options, |report, f| {
@@ -205,14 +234,15 @@ fn run(cli: Cli) -> Result<()> {
                 write_amplitudes(&dir.join("slip_amplitude.csv"), &result)?;
             }
             if csv {
-                print!("{}", report::march_csv(&result));
+                emit(&report::march_csv(&result))?;
             } else if json {
-                println!("{}", report::march_json(&result)?);
+                emit(&(report::march_json(&result)? + "\n"))?;
             } else {
-                print!(
-                    "{}",
-                    report::march_table(&result, &history, options.shakedown_tolerance)
-                );
+                emit(&report::march_table(
+                    &result,
+                    &history,
+                    options.shakedown_tolerance,
+                ))?;
             }
         }
         Command::Plot {
@@ -315,26 +345,27 @@ fn run(cli: Cli) -> Result<()> {
                 }
             };
             halfplane_plot::write(&fig, &output)?;
-            eprintln!("wrote {}", output.display());
+            note(&format!("wrote {}", output.display()));
         }
     }
     Ok(())
 }
 
 fn write_fields(path: &std::path::Path, f: &march::Fields) -> Result<()> {
-    let file = std::fs::File::create(path)
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-    let mut out = std::io::BufWriter::new(file);
-    writeln!(out, "x,pressure,traction,slip,slip_increment")?;
-    for i in 0..f.x.len() {
-        writeln!(
-            out,
-            "{},{},{},{},{}",
-            f.x[i], f.pressure[i], f.traction[i], f.slip[i], f.slip_increment[i]
-        )?;
-    }
-    out.flush()
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
+    let write = || -> io::Result<()> {
+        let mut out = io::BufWriter::new(std::fs::File::create(path)?);
+        writeln!(out, "x,pressure,traction,slip,slip_increment")?;
+        for i in 0..f.x.len() {
+            writeln!(
+                out,
+                "{},{},{},{},{}",
+                f.x[i], f.pressure[i], f.traction[i], f.slip[i], f.slip_increment[i]
+            )?;
+        }
+        // An explicit flush: dropping a BufWriter discards its error.
+        out.flush()
+    };
+    write().map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
 }
 
 fn write_amplitudes(path: &std::path::Path, result: &march::MarchResult) -> Result<()> {
@@ -353,12 +384,18 @@ fn write_amplitudes(path: &std::path::Path, result: &march::MarchResult) -> Resu
     std::fs::write(path, o).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
 }
 
+/// Exit 0 on success, 2 on any error. A closed stdout pipe is a success, quietly: the reader
+/// stopped on purpose (`| head`), as it would for `cat`; a shell would otherwise report 141
+/// (SIGPIPE), which Rust programs do not receive (the runtime ignores the signal).
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            ExitCode::from(2)
-        }
+        Err(e) => match e.downcast_ref::<StdoutError>() {
+            Some(StdoutError(io)) if io.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            _ => {
+                note(&format!("error: {e:#}"));
+                ExitCode::from(2)
+            }
+        },
     }
 }
