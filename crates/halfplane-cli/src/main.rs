@@ -173,7 +173,7 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let case = case::load(&case)?;
             let cycle = case.cycle()?;
-            let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
+            let ev = evolve(&case.contact, &cycle, points, &options)?;
             if csv {
                 emit(&report::evolve_csv(&ev))?;
             } else if json {
@@ -196,10 +196,7 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let case = case::load(&case)?;
             let history = case.history()?;
-            let mut options = case.solver;
-            if let Some(n) = cells {
-                options.cells = n;
-            }
+            let options = case.solver_with_cells(cells)?;
             if let Some(dir) = &fields {
                 std::fs::create_dir_all(dir).map_err(|e| {
                     anyhow::anyhow!(
@@ -259,13 +256,7 @@ fn run(cli: Cli) -> Result<()> {
             cells,
         } => {
             let case = case::load(&case)?;
-            let march_options = |case: &case::Case| {
-                let mut o = case.solver;
-                if let Some(n) = cells {
-                    o.cells = n;
-                }
-                o
-            };
+            let march_options = |case: &case::Case| case.solver_with_cells(cells);
             let fig = match figure {
                 FigureKind::LoadSpace => {
                     halfplane_plot::load_space_figure(&case.contact, &case.cycle()?)?
@@ -289,13 +280,13 @@ fn run(cli: Cli) -> Result<()> {
                 }
                 FigureKind::Evolution => {
                     let cycle = case.cycle()?;
-                    let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
+                    let ev = evolve(&case.contact, &cycle, points, &options)?;
                     let marched = if overlay {
                         let history = case.history()?;
                         let result = march::march(
                             &case.contact,
                             &history,
-                            &march_options(&case),
+                            &march_options(&case)?,
                             |_, _| {},
                         )?;
                         Some(halfplane_plot::MarchedCycle::last_cycle(&result, &history)?)
@@ -320,6 +311,15 @@ fn run(cli: Cli) -> Result<()> {
                     } else {
                         steps
                     };
+                    // Each drawn step keeps four fields of every cell; a figure of more curves
+                    // than this is unreadable anyway.
+                    const MAX_STEPS: usize = 20;
+                    if wanted.len() > MAX_STEPS {
+                        anyhow::bail!(
+                            "invalid --steps: {} values given, at most {MAX_STEPS} can be drawn",
+                            wanted.len()
+                        );
+                    }
                     if let Some(bad) = wanted.iter().find(|&&k| k == 0 || k > n) {
                         anyhow::bail!(
                             "invalid --steps value {bad}: the history has increments 1 to {n}"
@@ -333,7 +333,7 @@ fn run(cli: Cli) -> Result<()> {
                     let result = march::march(
                         &case.contact,
                         &history,
-                        &march_options(&case),
+                        &march_options(&case)?,
                         |r, fields| recorder.observe(r.step, fields, f),
                     )?;
                     match figure {
@@ -349,6 +349,26 @@ fn run(cli: Cli) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// [`evolution::evolve`], with the library's `points` named as the option that gave it.
+fn evolve(
+    contact: &halfplane::Contact,
+    cycle: &halfplane::Cycle,
+    points: usize,
+    options: &SteadyOptions,
+) -> Result<evolution::Evolution> {
+    evolution::evolve(contact, cycle, points, options).map_err(|e| match e {
+        halfplane::Error::InvalidCount {
+            field,
+            value,
+            min,
+            max,
+        } if field == "points" => {
+            anyhow::anyhow!("invalid --points = {value}: must be a whole number from {min} to {max} (points per half-cycle)")
+        }
+        other => other.into(),
+    })
 }
 
 fn write_fields(path: &std::path::Path, f: &march::Fields) -> Result<()> {
