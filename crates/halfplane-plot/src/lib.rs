@@ -234,8 +234,10 @@ impl MarchedCycle {
         let start = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
         let points = (1..=c.steps_per_cycle())
             .filter_map(|k| {
-                let s = &result.steps[start + k - 1];
-                s.largest_stick()
+                result
+                    .steps
+                    .get(start + k - 1)?
+                    .largest_stick()
                     .map(|[l, r]| (2.0 * k as f64 / c.steps_per_cycle() as f64, l, r))
             })
             .collect();
