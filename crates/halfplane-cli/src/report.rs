@@ -611,6 +611,7 @@ struct MarchReport<'a> {
 pub fn march_json(result: &halfplane::march::MarchResult) -> serde_json::Result<String> {
     let report = MarchReport {
         cells: result.x.len(),
+        // A march has at least 8 cells (the solver rejects fewer).
         cell_width: result.x[1] - result.x[0],
         steps: result
             .steps
@@ -648,6 +649,7 @@ pub fn march_table(
     tolerance: f64,
 ) -> String {
     let mut o = String::new();
+    // A march has at least 8 cells (the solver rejects fewer), so these indices exist.
     let n = result.x.len();
     let w = result.x[1] - result.x[0];
     let span = result.x[n - 1] + 0.5 * w;

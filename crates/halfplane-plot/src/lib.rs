@@ -174,10 +174,15 @@ pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotE
                             } else {
                                 (a_min - right) / a0
                             };
-                            pieces.last_mut().expect("one piece").push((x, w));
+                            // `pieces` starts with one piece and only grows, so there is a
+                            // last one; a fresh one would do if there were not.
+                            match pieces.last_mut() {
+                                Some(last) => last.push((x, w)),
+                                None => pieces.push(vec![(x, w)]),
+                            }
                         }
                         _ => {
-                            if !pieces.last().expect("one piece").is_empty() {
+                            if pieces.last().is_some_and(|p| !p.is_empty()) {
                                 pieces.push(Vec::new());
                             }
                         }
