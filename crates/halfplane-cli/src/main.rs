@@ -408,7 +408,23 @@ fn write_amplitudes(path: &std::path::Path, result: &march::MarchResult) -> Resu
 /// stopped on purpose (`| head`), as it would for `cat`; a shell would otherwise report 141
 /// (SIGPIPE), which Rust programs do not receive (the runtime ignores the signal).
 fn main() -> ExitCode {
-    match run(Cli::parse()) {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // Usage errors go to stderr (exit 2); --help and --version go to stdout (exit 0), where
+        // a full disk is an error like any other output (clap's own exit would ignore it).
+        Err(e) => {
+            let printed = e.print();
+            return match printed {
+                _ if e.use_stderr() => ExitCode::from(2),
+                Err(io) if io.kind() != io::ErrorKind::BrokenPipe => {
+                    note(&format!("error: {}", StdoutError(io)));
+                    ExitCode::from(2)
+                }
+                _ => ExitCode::SUCCESS,
+            };
+        }
+    };
+    match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => match e.downcast_ref::<StdoutError>() {
             Some(StdoutError(io)) if io.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,

@@ -209,6 +209,16 @@ fn a_full_disk_is_exit_2_with_a_message() {
             .unwrap();
         assert_clear_error(&format!("{args:?}"), &o, &["stdout", "No space left"]);
     }
+    let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
+        .arg("--help")
+        .stdout(full())
+        .output()
+        .unwrap();
+    assert_clear_error("--help", &o, &["stdout", "No space left"]);
+    let o = run_into_closed_pipe(&["--help"]);
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
+    // A usage error is exit 2 (clap's convention, and this project's).
+    assert_eq!(run(&["steady"]).status.code(), Some(2));
     // A full stderr loses the message but not the exit code.
     let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
         .args(["steady", "/nonexistent/case.toml"])
@@ -262,6 +272,22 @@ fn fields_and_plots_on_a_full_disk_are_exit_2_naming_the_file() {
         ]);
         assert_clear_error(file, &o, &[file, "No space left"]);
     }
+}
+
+#[test]
+fn march_fields_takes_at_most_20_steps() {
+    let steps: Vec<String> = (1..=21).map(|k| k.to_string()).collect();
+    let out = scratch("many-steps").join("f.svg");
+    let o = run(&[
+        "plot",
+        "march-fields",
+        &example("march-cycle.toml"),
+        "-o",
+        out.to_str().unwrap(),
+        "--steps",
+        &steps.join(","),
+    ]);
+    assert_clear_error("--steps", &o, &["--steps", "21 values", "20"]);
 }
 
 fn tabulated_case(name: &str, table: &[u8], case_prefix: &[u8], eol: &str) -> PathBuf {
