@@ -5,8 +5,86 @@ use anyhow::{anyhow, bail, Context, Result};
 use halfplane::history::{Harmonic, History, Ramp};
 use halfplane::march::MarchOptions;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
+use std::io::BufRead;
 use std::path::Path;
+
+/// The most cells `solver.cells` and `--cells` take. The solver holds about 1.8 kB per cell
+/// (O(N) vectors and up to 12 cached Toeplitz generators with their spectra: 14 MB at 8000 cells,
+/// BENCHMARKS.md), so 100,000 cells take about 180 MB; and 300 increments take about 2.4 s at
+/// 8000 cells, growing like N^1.5, so about 2 minutes at 100,000.
+pub const MAX_CELLS: usize = 100_000;
+
+/// A count as the case file gives it. Any TOML value is taken here and checked when resolved,
+/// so that the error names the field, the value and the valid range (serde's own message would
+/// say "expected usize", and a negative or huge integer would not name the field).
+#[derive(Debug, Clone, PartialEq)]
+enum RawCount {
+    Integer(i128),
+    Float(f64),
+    /// Anything else, as written.
+    Other(String),
+}
+
+impl<'de> Deserialize<'de> for RawCount {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = RawCount;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a whole number")
+            }
+            fn visit_i64<E>(self, v: i64) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Integer(v.into()))
+            }
+            fn visit_u64<E>(self, v: u64) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Integer(v.into()))
+            }
+            fn visit_i128<E>(self, v: i128) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Integer(v))
+            }
+            fn visit_u128<E>(self, v: u128) -> std::result::Result<RawCount, E> {
+                Ok(i128::try_from(v)
+                    .map_or_else(|_| RawCount::Other(v.to_string()), RawCount::Integer))
+            }
+            fn visit_f64<E>(self, v: f64) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Float(v))
+            }
+            fn visit_bool<E>(self, v: bool) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Other(v.to_string()))
+            }
+            fn visit_str<E>(self, v: &str) -> std::result::Result<RawCount, E> {
+                Ok(RawCount::Other(format!("\"{v}\"")))
+            }
+        }
+        d.deserialize_any(Visitor)
+    }
+}
+
+/// Checks a count: a whole number (an integer, or a float with no fraction) from `min` to
+/// `max`. The library checks its own ranges again; this turns values that do not fit a `usize`
+/// (negative, huge, fractional, not a number) into the same kind of message.
+fn count_in(value: &RawCount, field: &str, min: usize, max: usize) -> Result<usize> {
+    let whole = match value {
+        RawCount::Integer(i) => Some(*i),
+        // Every float of magnitude below 2^100 converts exactly when it has no fraction.
+        RawCount::Float(f) if f.is_finite() && f.fract() == 0.0 && f.abs() < 1e30 => {
+            Some(*f as i128)
+        }
+        _ => None,
+    };
+    match whole.and_then(|w| usize::try_from(w).ok()) {
+        Some(n) if (min..=max).contains(&n) => Ok(n),
+        _ => {
+            let shown = match value {
+                RawCount::Integer(i) => i.to_string(),
+                RawCount::Float(f) => f.to_string(),
+                RawCount::Other(s) => s.clone(),
+            };
+            bail!("invalid {field} = {shown}: must be a whole number from {min} to {max}")
+        }
+    }
+}
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -24,11 +102,11 @@ struct RawCase {
 struct RawHistory {
     kind: Option<String>,
     file: Option<String>,
-    cycles: Option<usize>,
-    steps_per_half: Option<usize>,
-    steps_per_cycle: Option<usize>,
+    cycles: Option<RawCount>,
+    steps_per_half: Option<RawCount>,
+    steps_per_cycle: Option<RawCount>,
     ramp: Option<String>,
-    ramp_steps: Option<usize>,
+    ramp_steps: Option<RawCount>,
     normal: Option<RawHarmonic>,
     shear: Option<RawHarmonic>,
     bulk: Option<RawHarmonic>,
@@ -45,7 +123,7 @@ struct RawHarmonic {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawSolver {
-    cells: Option<usize>,
+    cells: Option<RawCount>,
     slip_tolerance: Option<f64>,
 }
 
@@ -104,6 +182,15 @@ impl Case {
         self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\", or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))
     }
 
+    /// The solver settings, with `cells` (from `--cells`) overriding `[solver] cells`.
+    pub fn solver_with_cells(&self, cells: Option<usize>) -> Result<MarchOptions> {
+        let mut options = self.solver;
+        if let Some(n) = cells {
+            options.cells = count_in(&RawCount::Integer(n as i128), "--cells", 8, MAX_CELLS)?;
+        }
+        Ok(options)
+    }
+
     /// The cycle, or an error saying the `[cycle]` section is needed.
     pub fn cycle(&self) -> Result<Cycle> {
         self.cycle.ok_or_else(|| anyhow!("missing section [cycle]: give point1 and point2, e.g. point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}"))
@@ -131,8 +218,10 @@ fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
 pub fn load(path: &Path) -> Result<Case> {
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("cannot read case file {}", path.display()))?;
+    // An editor on Windows may save UTF-8 with a byte-order mark, which TOML does not allow.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    parse(&text, &dir).with_context(|| format!("in case file {}", path.display()))
+    parse(text, &dir).with_context(|| format!("in case file {}", path.display()))
 }
 
 /// Resolves case text; relative paths are taken from `dir`.
@@ -192,11 +281,8 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
     };
     let mut solver = MarchOptions::default();
     if let Some(raw_solver) = raw.solver {
-        if let Some(cells) = raw_solver.cells {
-            if cells < 8 {
-                bail!("invalid solver.cells = {cells}: must be a whole number >= 8");
-            }
-            solver.cells = cells;
+        if let Some(cells) = &raw_solver.cells {
+            solver.cells = count_in(cells, "solver.cells", 8, MAX_CELLS)?;
         }
         if let Some(t) = raw_solver.slip_tolerance {
             if !(t.is_finite() && t > 0.0 && t < 1.0) {
@@ -251,15 +337,26 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
         ("bulk", h.bulk.is_some()),
     ];
     reject_unused("history", &kind, used, &given)?;
-    let count = |v: Option<usize>, field: &str, what: &str| {
-        v.ok_or_else(|| anyhow!("missing field history.{field}: give {what}"))
+    let max = halfplane::history::MAX_INCREMENTS;
+    let count = |v: &Option<RawCount>, field: &str, min: usize, what: &str| match v {
+        Some(v) => count_in(v, &format!("history.{field}"), min, max),
+        None => Err(anyhow!("missing field history.{field}: give {what}")),
+    };
+    let ramp_steps = match &h.ramp_steps {
+        Some(v) => count_in(v, "history.ramp_steps", 1, max)?,
+        None => 20,
     };
     Ok(match kind.as_str() {
         "file" => {
             let file = h.file.ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file"))?;
             let path = dir.join(&file);
-            let (rows, lines) = read_csv(&path, "history.file", &["normal", "shear", "bulk"])?;
-            let rows: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
+            let (values, lines) = read_csv(
+                &path,
+                "history.file",
+                &["normal", "shear", "bulk"],
+                halfplane::history::MAX_INCREMENTS,
+            )?;
+            let rows: Vec<[f64; 3]> = values.chunks_exact(3).map(|r| [r[0], r[1], r[2]]).collect();
             History::from_rows(&rows).map_err(|e| match e {
                 halfplane::Error::InvalidInput {
                     field,
@@ -295,14 +392,15 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
             History::in_phase(
                 first,
                 second,
-                count(h.cycles, "cycles", "the number of cycles >= 1")?,
+                count(&h.cycles, "cycles", 1, "the number of cycles >= 1")?,
                 count(
-                    h.steps_per_half,
+                    &h.steps_per_half,
                     "steps_per_half",
+                    1,
                     "increments per half-cycle >= 1",
                 )?,
                 ramp,
-                h.ramp_steps.unwrap_or(20),
+                ramp_steps,
             )?
         }
         _ => {
@@ -328,13 +426,14 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
                 harmonic(h.normal, "normal")?,
                 harmonic(h.shear, "shear")?,
                 harmonic(h.bulk, "bulk")?,
-                count(h.cycles, "cycles", "the number of cycles >= 1")?,
+                count(&h.cycles, "cycles", 1, "the number of cycles >= 1")?,
                 count(
-                    h.steps_per_cycle,
+                    &h.steps_per_cycle,
                     "steps_per_cycle",
+                    2,
                     "increments per cycle >= 2",
                 )?,
-                h.ramp_steps.unwrap_or(20),
+                ramp_steps,
             )?
         }
     })
@@ -379,8 +478,13 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
         _ => {
             let file = p.file.ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file"))?;
             let path = dir.join(&file);
-            let (rows, lines) = read_csv(&path, "profile.file", &["x", "g"])?;
-            let (x, g) = rows.iter().map(|r| (r[0], r[1])).unzip();
+            let (values, lines) = read_csv(
+                &path,
+                "profile.file",
+                &["x", "g"],
+                halfplane::profile::MAX_TABLE_ROWS,
+            )?;
+            let (x, g) = values.chunks_exact(2).map(|r| (r[0], r[1])).unzip();
             Profile::tabulated(x, g, p.kinks.unwrap_or_default()).map_err(|e| match e {
                 halfplane::Error::InvalidTable { row, problem }
                     if row >= 1 && row <= lines.len() =>
@@ -397,65 +501,95 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
     })
 }
 
-/// Reads a CSV whose header names `columns`; blank lines and lines starting with `#` are
-/// skipped. Returns the rows and the file line of each (for errors). `field` names the case-file
-/// field that gave the path.
-fn read_csv(path: &Path, field: &str, columns: &[&str]) -> Result<(Vec<Vec<f64>>, Vec<usize>)> {
-    let text = std::fs::read_to_string(path)
+/// Reads a CSV whose header names `columns`, at most `max_rows` data rows; blank lines and lines
+/// starting with `#` are skipped, a UTF-8 byte-order mark and CRLF line ends (a spreadsheet's
+/// "CSV UTF-8") are accepted. Returns the values row after row (`columns.len()` per row) and
+/// the file line of each row (for errors). `field` names the case-file field that gave the path.
+///
+/// The file is read a line at a time, so a file with too many rows is rejected without holding
+/// it: memory stays proportional to the rows kept.
+fn read_csv(
+    path: &Path,
+    field: &str,
+    columns: &[&str],
+    max_rows: usize,
+) -> Result<(Vec<f64>, Vec<usize>)> {
+    let file = std::fs::File::open(path)
         .with_context(|| format!("cannot read {field} {}", path.display()))?;
+    let mut reader = std::io::BufReader::new(file);
     let header_text = columns.join(",");
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-    let (at, header) = lines.next().ok_or_else(|| {
-        anyhow!(
-            "{field} {} is empty: it needs a header {header_text} and rows",
-            path.display()
-        )
-    })?;
-    let names: Vec<String> = header
-        .split(',')
-        .map(|s| s.trim().to_ascii_lowercase())
-        .collect();
-    if names != columns {
-        bail!(
-            "{field} {}, line {}: header is \"{}\", expected \"{header_text}\"",
-            path.display(),
-            at + 1,
-            header.trim()
-        );
-    }
-    let (mut rows, mut numbers) = (Vec::new(), Vec::new());
-    for (i, line) in lines {
-        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-        if cells.len() != columns.len() {
+    let (mut values, mut numbers) = (Vec::new(), Vec::new());
+    let mut header_seen = false;
+    let mut line = String::new();
+    for number in 1.. {
+        line.clear();
+        let read = reader
+            .read_line(&mut line)
+            .with_context(|| format!("cannot read {field} {}, line {number}", path.display()))?;
+        if read == 0 {
+            break;
+        }
+        let text = if number == 1 {
+            line.strip_prefix('\u{feff}').unwrap_or(&line)
+        } else {
+            &line
+        };
+        // trim() also removes the '\r' of a CRLF line end.
+        let text = text.trim();
+        if text.is_empty() || text.starts_with('#') {
+            continue;
+        }
+        if !header_seen {
+            let names: Vec<String> = text
+                .split(',')
+                .map(|s| s.trim().to_ascii_lowercase())
+                .collect();
+            if names != columns {
+                bail!(
+                    "{field} {}, line {number}: header is \"{text}\", expected \"{header_text}\"",
+                    path.display()
+                );
+            }
+            header_seen = true;
+            continue;
+        }
+        if numbers.len() == max_rows {
             bail!(
-                "{field} {}, line {}: expected {} columns ({header_text}), found {}",
-                path.display(),
-                i + 1,
-                columns.len(),
-                cells.len()
+                "{field} {}, line {number}: the table has more than {max_rows} rows, the most a run takes",
+                path.display()
             );
         }
-        let row = cells
-            .iter()
-            .zip(columns)
-            .map(|(cell, name)| {
-                cell.parse::<f64>().map_err(|_| {
-                    anyhow!(
-                        "{field} {}, line {}: {name} = \"{cell}\" is not a number",
-                        path.display(),
-                        i + 1
-                    )
-                })
-            })
-            .collect::<Result<Vec<f64>>>()?;
-        rows.push(row);
-        numbers.push(i + 1);
+        let mut found = 0;
+        for cell in text.split(',').map(str::trim) {
+            found += 1;
+            let Some(name) = columns.get(found - 1) else {
+                continue;
+            };
+            let value = cell.parse::<f64>().map_err(|_| {
+                anyhow!(
+                    "{field} {}, line {number}: {name} = \"{cell}\" is not a number",
+                    path.display()
+                )
+            })?;
+            values.push(value);
+        }
+        if found != columns.len() {
+            bail!(
+                "{field} {}, line {number}: expected {} columns ({header_text}), found {found}",
+                path.display(),
+                columns.len()
+            );
+        }
+        numbers.push(number);
     }
-    if rows.is_empty() {
+    if !header_seen {
+        bail!(
+            "{field} {} is empty: it needs a header {header_text} and rows",
+            path.display()
+        );
+    }
+    if numbers.is_empty() {
         bail!("{field} {} has a header but no rows", path.display());
     }
-    Ok((rows, numbers))
+    Ok((values, numbers))
 }

@@ -6,9 +6,37 @@ use clap::{Parser, Subcommand, ValueEnum};
 use halfplane::{asymptotic, evolution, march, steady, SteadyOptions};
 use halfplane_cli::{case, report};
 use indicatif::{ProgressBar, ProgressStyle};
-use std::io::Write;
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+/// A failed write to stdout. Kept apart from other errors so that `main` can end quietly when
+/// the reader has gone away (`halfplane march case.toml --csv | head`).
+#[derive(Debug)]
+struct StdoutError(io::Error);
+
+impl std::fmt::Display for StdoutError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "cannot write to stdout: {}", self.0)
+    }
+}
+
+impl std::error::Error for StdoutError {}
+
+/// Writes `text` to stdout and flushes it. `print!` would panic on a closed pipe or a full disk;
+/// this returns the error instead.
+fn emit(text: &str) -> Result<()> {
+    let mut out = io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| StdoutError(e).into())
+}
+
+/// A line on stderr. `eprintln!` would panic when stderr cannot be written (a full disk): the
+/// message is then lost, but the run's outcome and exit code stand.
+fn note(text: &str) {
+    let _ = writeln!(io::stderr().lock(), "{text}");
+}
 
 /// Frictional half-plane contact: steady-state stick zones, slip zones and their evolution.
 #[derive(Parser)]
@@ -129,12 +157,12 @@ fn run(cli: Cli) -> Result<()> {
             let asym_ok = asym.as_ref().and_then(|a| a.as_ref().ok());
             let report = report::SteadyReport::new(&case.contact, &state, asym_ok)?;
             if json {
-                println!("{}", serde_json::to_string_pretty(&report)?);
+                emit(&(serde_json::to_string_pretty(&report)? + "\n"))?;
             } else {
-                print!("{}", report.table(&state));
+                emit(&report.table(&state))?;
             }
             if let Some(Err(e)) = asym {
-                eprintln!("note: no asymptotic estimate: {e}");
+                note(&format!("note: no asymptotic estimate: {e}"));
             }
         }
         Command::Evolve {
@@ -145,17 +173,17 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let case = case::load(&case)?;
             let cycle = case.cycle()?;
-            let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
+            let ev = evolve(&case.contact, &cycle, points, &options)?;
             if csv {
-                print!("{}", report::evolve_csv(&ev));
+                emit(&report::evolve_csv(&ev))?;
             } else if json {
-                println!("{}", report::evolve_json(&ev)?);
+                emit(&(report::evolve_json(&ev)? + "\n"))?;
             } else {
-                print!("{}", report::evolve_table(&ev));
+                emit(&report::evolve_table(&ev))?;
             }
             if !json {
                 for w in report::warnings(&ev) {
-                    eprintln!("{w}");
+                    note(&w);
                 }
             }
         }
@@ -168,10 +196,7 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let case = case::load(&case)?;
             let history = case.history()?;
-            let mut options = case.solver;
-            if let Some(n) = cells {
-                options.cells = n;
-            }
+            let options = case.solver_with_cells(cells)?;
             if let Some(dir) = &fields {
                 std::fs::create_dir_all(dir).map_err(|e| {
                     anyhow::anyhow!(
@@ -182,8 +207,9 @@ fn run(cli: Cli) -> Result<()> {
             }
             let bar = ProgressBar::new(history.loads().len() as u64);
             bar.set_style(
+                // The template is a constant that parses; a plain bar would do if it did not.
                 ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
-                    .expect("valid template"),
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
             let mut write_error = None;
             let result = march::march(&case.contact, &history, &options, |report, f| {
@@ -205,14 +231,15 @@ fn run(cli: Cli) -> Result<()> {
                 write_amplitudes(&dir.join("slip_amplitude.csv"), &result)?;
             }
             if csv {
-                print!("{}", report::march_csv(&result));
+                emit(&report::march_csv(&result))?;
             } else if json {
-                println!("{}", report::march_json(&result)?);
+                emit(&(report::march_json(&result)? + "\n"))?;
             } else {
-                print!(
-                    "{}",
-                    report::march_table(&result, &history, options.shakedown_tolerance)
-                );
+                emit(&report::march_table(
+                    &result,
+                    &history,
+                    options.shakedown_tolerance,
+                ))?;
             }
         }
         Command::Plot {
@@ -229,13 +256,7 @@ fn run(cli: Cli) -> Result<()> {
             cells,
         } => {
             let case = case::load(&case)?;
-            let march_options = |case: &case::Case| {
-                let mut o = case.solver;
-                if let Some(n) = cells {
-                    o.cells = n;
-                }
-                o
-            };
+            let march_options = |case: &case::Case| case.solver_with_cells(cells);
             let fig = match figure {
                 FigureKind::LoadSpace => {
                     halfplane_plot::load_space_figure(&case.contact, &case.cycle()?)?
@@ -259,13 +280,13 @@ fn run(cli: Cli) -> Result<()> {
                 }
                 FigureKind::Evolution => {
                     let cycle = case.cycle()?;
-                    let ev = evolution::evolve(&case.contact, &cycle, points, &options)?;
+                    let ev = evolve(&case.contact, &cycle, points, &options)?;
                     let marched = if overlay {
                         let history = case.history()?;
                         let result = march::march(
                             &case.contact,
                             &history,
-                            &march_options(&case),
+                            &march_options(&case)?,
                             |_, _| {},
                         )?;
                         Some(halfplane_plot::MarchedCycle::last_cycle(&result, &history)?)
@@ -290,6 +311,15 @@ fn run(cli: Cli) -> Result<()> {
                     } else {
                         steps
                     };
+                    // Each drawn step keeps four fields of every cell; a figure of more curves
+                    // than this is unreadable anyway.
+                    const MAX_STEPS: usize = 20;
+                    if wanted.len() > MAX_STEPS {
+                        anyhow::bail!(
+                            "invalid --steps: {} values given, at most {MAX_STEPS} can be drawn",
+                            wanted.len()
+                        );
+                    }
                     if let Some(bad) = wanted.iter().find(|&&k| k == 0 || k > n) {
                         anyhow::bail!(
                             "invalid --steps value {bad}: the history has increments 1 to {n}"
@@ -303,7 +333,7 @@ fn run(cli: Cli) -> Result<()> {
                     let result = march::march(
                         &case.contact,
                         &history,
-                        &march_options(&case),
+                        &march_options(&case)?,
                         |r, fields| recorder.observe(r.step, fields, f),
                     )?;
                     match figure {
@@ -315,26 +345,47 @@ fn run(cli: Cli) -> Result<()> {
                 }
             };
             halfplane_plot::write(&fig, &output)?;
-            eprintln!("wrote {}", output.display());
+            note(&format!("wrote {}", output.display()));
         }
     }
     Ok(())
 }
 
+/// [`evolution::evolve`], with the library's `points` named as the option that gave it.
+fn evolve(
+    contact: &halfplane::Contact,
+    cycle: &halfplane::Cycle,
+    points: usize,
+    options: &SteadyOptions,
+) -> Result<evolution::Evolution> {
+    evolution::evolve(contact, cycle, points, options).map_err(|e| match e {
+        halfplane::Error::InvalidCount {
+            field,
+            value,
+            min,
+            max,
+        } if field == "points" => {
+            anyhow::anyhow!("invalid --points = {value}: must be a whole number from {min} to {max} (points per half-cycle)")
+        }
+        other => other.into(),
+    })
+}
+
 fn write_fields(path: &std::path::Path, f: &march::Fields) -> Result<()> {
-    let file = std::fs::File::create(path)
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-    let mut out = std::io::BufWriter::new(file);
-    writeln!(out, "x,pressure,traction,slip,slip_increment")?;
-    for i in 0..f.x.len() {
-        writeln!(
-            out,
-            "{},{},{},{},{}",
-            f.x[i], f.pressure[i], f.traction[i], f.slip[i], f.slip_increment[i]
-        )?;
-    }
-    out.flush()
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
+    let write = || -> io::Result<()> {
+        let mut out = io::BufWriter::new(std::fs::File::create(path)?);
+        writeln!(out, "x,pressure,traction,slip,slip_increment")?;
+        for i in 0..f.x.len() {
+            writeln!(
+                out,
+                "{},{},{},{},{}",
+                f.x[i], f.pressure[i], f.traction[i], f.slip[i], f.slip_increment[i]
+            )?;
+        }
+        // An explicit flush: dropping a BufWriter discards its error.
+        out.flush()
+    };
+    write().map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
 }
 
 fn write_amplitudes(path: &std::path::Path, result: &march::MarchResult) -> Result<()> {
@@ -369,15 +420,37 @@ fn hint(error: &anyhow::Error) -> Option<&'static str> {
     }
 }
 
+/// Exit 0 on success, 2 on any error. A closed stdout pipe is a success, quietly: the reader
+/// stopped on purpose (`| head`), as it would for `cat`; a shell would otherwise report 141
+/// (SIGPIPE), which Rust programs do not receive (the runtime ignores the signal).
 fn main() -> ExitCode {
-    match run(Cli::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // Usage errors go to stderr (exit 2); --help and --version go to stdout (exit 0), where
+        // a full disk is an error like any other output (clap's own exit would ignore it).
         Err(e) => {
-            eprintln!("error: {e:#}");
-            if let Some(h) = hint(&e) {
-                eprintln!("hint: {h}");
-            }
-            ExitCode::from(2)
+            let printed = e.print();
+            return match printed {
+                _ if e.use_stderr() => ExitCode::from(2),
+                Err(io) if io.kind() != io::ErrorKind::BrokenPipe => {
+                    note(&format!("error: {}", StdoutError(io)));
+                    ExitCode::from(2)
+                }
+                _ => ExitCode::SUCCESS,
+            };
         }
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => match e.downcast_ref::<StdoutError>() {
+            Some(StdoutError(io)) if io.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            _ => {
+                note(&format!("error: {e:#}"));
+                if let Some(h) = hint(&e) {
+                    note(&format!("hint: {h}"));
+                }
+                ExitCode::from(2)
+            }
+        },
     }
 }

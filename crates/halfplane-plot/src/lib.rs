@@ -176,10 +176,15 @@ pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotE
                             } else {
                                 (a_min - right) / a0
                             };
-                            pieces.last_mut().expect("one piece").push((x, w));
+                            // `pieces` starts with one piece and only grows, so there is a
+                            // last one; a fresh one would do if there were not.
+                            match pieces.last_mut() {
+                                Some(last) => last.push((x, w)),
+                                None => pieces.push(vec![(x, w)]),
+                            }
                         }
                         _ => {
-                            if !pieces.last().expect("one piece").is_empty() {
+                            if pieces.last().is_some_and(|p| !p.is_empty()) {
                                 pieces.push(Vec::new());
                             }
                         }
@@ -236,8 +241,10 @@ impl MarchedCycle {
         let start = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
         let points = (1..=c.steps_per_cycle())
             .filter_map(|k| {
-                let s = &result.steps[start + k - 1];
-                s.largest_stick()
+                result
+                    .steps
+                    .get(start + k - 1)?
+                    .largest_stick()
                     .map(|[l, r]| (2.0 * k as f64 / c.steps_per_cycle() as f64, l, r))
             })
             .collect();

@@ -1,6 +1,8 @@
 //! A small renderer: panels of named series drawn side by side, to SVG or PNG by file name.
 
 use crate::PlotError;
+use image::codecs::png::PngEncoder;
+use image::{ColorType, ImageEncoder};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -126,19 +128,45 @@ pub fn write(figure: &Figure, path: &Path) -> Result<(), PlotError> {
         .map(str::to_ascii_lowercase);
     let width = 640 * figure.panels.len().max(1) as u32;
     let size = (width.min(1920), 520);
-    // Fail early, with the path, when the file cannot be created.
-    std::fs::File::create(path).map_err(|e| PlotError::Io {
+    let io_error = |e: std::io::Error| PlotError::Io {
         path: path.display().to_string(),
         message: e.to_string(),
-    })?;
-    register_font();
-    match ext.as_deref() {
-        Some("svg") => draw(figure, SVGBackend::new(path, size).into_drawing_area()),
-        Some("png") => draw(figure, BitMapBackend::new(path, size).into_drawing_area()),
-        _ => Err(PlotError::Format {
-            path: path.display().to_string(),
-        }),
+    };
+    let format_error = || PlotError::Format {
+        path: path.display().to_string(),
+    };
+    if !matches!(ext.as_deref(), Some("svg" | "png")) {
+        return Err(format_error());
     }
+    // Fail early, with the path, when the file cannot be created.
+    std::fs::File::create(path).map_err(io_error)?;
+    register_font();
+    // The figure is drawn in memory and written here, so that a failed write (a full disk) is
+    // reported: the backends' own file writers drop buffered errors.
+    let bytes = match ext.as_deref() {
+        Some("svg") => {
+            let mut svg = String::new();
+            draw(
+                figure,
+                SVGBackend::with_string(&mut svg, size).into_drawing_area(),
+            )?;
+            svg.into_bytes()
+        }
+        Some("png") => {
+            let mut rgb = vec![0u8; 3 * size.0 as usize * size.1 as usize];
+            draw(
+                figure,
+                BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area(),
+            )?;
+            let mut png = Vec::new();
+            PngEncoder::new(&mut png)
+                .write_image(&rgb, size.0, size.1, ColorType::Rgb8)
+                .map_err(draw_error)?;
+            png
+        }
+        _ => return Err(format_error()),
+    };
+    std::fs::write(path, bytes).map_err(io_error)
 }
 
 fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {

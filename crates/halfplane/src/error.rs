@@ -50,6 +50,17 @@ pub enum Error {
         what: &'static str,
     },
 
+    /// A table (profile, history) has more rows than a run can hold.
+    #[error("the {what} has {rows} rows, more than the {max} allowed; use a coarser table")]
+    TooManyRows {
+        /// Which table.
+        what: &'static str,
+        /// Rows given.
+        rows: usize,
+        /// The limit (for profiles, [`crate::profile::MAX_TABLE_ROWS`]).
+        max: usize,
+    },
+
     /// A tabulated profile is malformed.
     #[error("tabulated profile, row {row}: {problem}")]
     InvalidTable {
