@@ -2,9 +2,9 @@
 //! what the library computes.
 
 use anyhow::Result;
-use halfplane_cli::{case, report};
 use clap::{Parser, Subcommand, ValueEnum};
 use halfplane::{asymptotic, evolution, march, steady, SteadyOptions};
+use halfplane_cli::{case, report};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::Write;
 use std::path::PathBuf;
