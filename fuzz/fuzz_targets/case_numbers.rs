@@ -131,7 +131,11 @@ fuzz_target!(|input: Input| {
         }
         ProfileInput::FlatRounded(b, r) => {
             // kinds_swapped: a field the kind does not use must be rejected, not ignored.
-            t += if input.kinds_swapped { "kind = \"hertz\"\n" } else { "kind = \"flat-rounded\"\n" };
+            t += if input.kinds_swapped {
+                "kind = \"hertz\"\n"
+            } else {
+                "kind = \"flat-rounded\"\n"
+            };
             t += &num(b).line("flat_half_width");
             t += &num(r).line("radius");
         }
@@ -140,7 +144,11 @@ fuzz_target!(|input: Input| {
             t += &num(c).line("coefficient");
             t += &num(k).line("exponent");
         }
-        ProfileInput::Tabulated { monotone, rows, kinks } => {
+        ProfileInput::Tabulated {
+            monotone,
+            rows,
+            kinks,
+        } => {
             let (x, g) = ProfileInput::table(*monotone, rows);
             let text = csv("x,g", x.iter().zip(&g).map(|(x, g)| vec![*x, *g]));
             std::fs::write(dir.join("profile.csv"), text).unwrap();
@@ -171,7 +179,12 @@ fuzz_target!(|input: Input| {
     }
     match &input.history {
         HistoryInput::None => {}
-        HistoryInput::Cycle { cycles, steps_per_half, proportional, ramp_steps } => {
+        HistoryInput::Cycle {
+            cycles,
+            steps_per_half,
+            proportional,
+            ramp_steps,
+        } => {
             t += "[history]\nkind = \"cycle\"\n";
             t += &cycles.line("cycles");
             t += &steps_per_half.line("steps_per_half");
@@ -180,12 +193,23 @@ fuzz_target!(|input: Input| {
             }
             t += &ramp_steps.line("ramp_steps");
         }
-        HistoryInput::Harmonic { normal, shear, bulk, cycles, steps_per_cycle, ramp_steps } => {
+        HistoryInput::Harmonic {
+            normal,
+            shear,
+            bulk,
+            cycles,
+            steps_per_cycle,
+            ramp_steps,
+        } => {
             t += "[history]\nkind = \"harmonic\"\n";
             t += &cycles.line("cycles");
             t += &steps_per_cycle.line("steps_per_cycle");
             t += &ramp_steps.line("ramp_steps");
-            for (name, h) in [("normal", Some(normal)), ("shear", shear.as_ref()), ("bulk", bulk.as_ref())] {
+            for (name, h) in [
+                ("normal", Some(normal)),
+                ("shear", shear.as_ref()),
+                ("bulk", bulk.as_ref()),
+            ] {
                 if let Some(h) = h {
                     let _ = writeln!(
                         t,
@@ -201,7 +225,9 @@ fuzz_target!(|input: Input| {
         HistoryInput::File(rows) => {
             let text = csv(
                 "normal,shear,bulk",
-                rows.iter().take(64).map(|r| r.iter().map(|v| v.0).collect()),
+                rows.iter()
+                    .take(64)
+                    .map(|r| r.iter().map(|v| v.0).collect()),
             );
             std::fs::write(dir.join("history.csv"), text).unwrap();
             t += "[history]\nfile = \"history.csv\"\n";

@@ -25,9 +25,14 @@ fuzz_target!(|data: &[u8]| {
     if mode % 2 == 0 {
         std::fs::write(dir.join("profile.csv"), bytes).unwrap();
         // Kinks: none, or one of a few values that tables often contain.
-        let kinks = ["", "kinks = [0.3]\n", "kinks = [0.0]\n", "kinks = [1.0, 0.5]\n"]
-            [usize::from(mode / 2) % 4];
-        let text = format!("{MATERIAL}[profile]\nkind = \"tabulated\"\nfile = \"profile.csv\"\n{kinks}");
+        let kinks = [
+            "",
+            "kinks = [0.3]\n",
+            "kinks = [0.0]\n",
+            "kinks = [1.0, 0.5]\n",
+        ][usize::from(mode / 2) % 4];
+        let text =
+            format!("{MATERIAL}[profile]\nkind = \"tabulated\"\nfile = \"profile.csv\"\n{kinks}");
         let Ok(case) = halfplane_cli::case::parse(&text, dir) else {
             return;
         };
@@ -60,7 +65,11 @@ fuzz_target!(|data: &[u8]| {
         ) else {
             return;
         };
-        if let Ok(s) = analyse(contact, &Cycle::new(first, second), &SteadyOptions::default()) {
+        if let Ok(s) = analyse(
+            contact,
+            &Cycle::new(first, second),
+            &SteadyOptions::default(),
+        ) {
             check_steady(&s);
         }
     } else {

@@ -48,7 +48,13 @@ fuzz_target!(|input: Input| {
             let rows: Vec<[f64; 3]> = rows.iter().take(12).map(|r| r.map(|v| v.0)).collect();
             History::from_rows(&rows)
         }
-        HistoryInput::InPhase { points, cycles, steps_per_half, normal_first, ramp_steps } => {
+        HistoryInput::InPhase {
+            points,
+            cycles,
+            steps_per_half,
+            normal_first,
+            ramp_steps,
+        } => {
             let [p, q] = points.map(|p| LoadPoint::new("point", p[0].0, p[1].0, p[2].0));
             let (Ok(p), Ok(q)) = (p, q) else {
                 return;
@@ -58,7 +64,11 @@ fuzz_target!(|input: Input| {
                 q,
                 usize::from(cycles % 3),
                 usize::from(steps_per_half % 4),
-                if *normal_first { Ramp::NormalFirst } else { Ramp::Proportional },
+                if *normal_first {
+                    Ramp::NormalFirst
+                } else {
+                    Ramp::Proportional
+                },
                 usize::from(ramp_steps % 4),
             )
         }
@@ -68,7 +78,11 @@ fuzz_target!(|input: Input| {
     };
     let mut options = MarchOptions {
         cells: 6 + usize::from(input.cells % 27),
-        solver: if input.dense { LinearSolver::Dense } else { LinearSolver::Toeplitz },
+        solver: if input.dense {
+            LinearSolver::Dense
+        } else {
+            LinearSolver::Toeplitz
+        },
         ..MarchOptions::default()
     };
     if let Some(t) = input.slip_tolerance {

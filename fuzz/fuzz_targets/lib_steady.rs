@@ -42,7 +42,10 @@ fuzz_target!(|input: Input| {
         if let Ok(a) = contact.half_width(normal) {
             check_half_width(a, &(normal, &contact));
             if let Ok(back) = contact.load(a) {
-                assert!(back.is_finite() && back >= 0.0, "P({a}) = {back} for {contact:?}");
+                assert!(
+                    back.is_finite() && back >= 0.0,
+                    "P({a}) = {back} for {contact:?}"
+                );
             }
             if let Ok(k) = contact.normal_intensity(a) {
                 assert!(k.is_finite(), "K_N({a}) = {k} for {contact:?}");
@@ -50,12 +53,19 @@ fuzz_target!(|input: Input| {
             let x = input.x.0;
             for x in [x, x * a] {
                 if let Ok(p) = contact.pressure(a, x) {
-                    assert!(p.is_finite() && p >= 0.0, "p({x}) = {p} at a = {a} for {contact:?}");
+                    assert!(
+                        p.is_finite() && p >= 0.0,
+                        "p({x}) = {p} at a = {a} for {contact:?}"
+                    );
                 }
             }
         }
-        if let Ok(l) = LoadPoint::new(if i == 0 { "first" } else { "second" }, normal, p[1].0, p[2].0)
-        {
+        if let Ok(l) = LoadPoint::new(
+            if i == 0 { "first" } else { "second" },
+            normal,
+            p[1].0,
+            p[2].0,
+        ) {
             loads.push(l);
         }
     }
@@ -64,7 +74,11 @@ fuzz_target!(|input: Input| {
     };
     let cycle = Cycle::new(first, second);
     let options = SteadyOptions {
-        method: if input.implicit { Method::Implicit } else { Method::Auto },
+        method: if input.implicit {
+            Method::Implicit
+        } else {
+            Method::Auto
+        },
         ..SteadyOptions::default()
     };
     if let Ok(s) = analyse(&contact, &cycle, &options) {
