@@ -72,7 +72,7 @@ impl EdgeState {
     pub fn at(contact: &Contact, point: &LoadPoint) -> Result<Self> {
         let a = contact.half_width(point.normal())?;
         let normal_intensity = contact.normal_intensity(a)?;
-        if !(normal_intensity > 0.0) {
+        if normal_intensity.is_nan() || normal_intensity <= 0.0 {
             return Err(Error::InvalidInput {
                 field: "normal load".into(),
                 value: point.normal(),
