@@ -66,11 +66,22 @@ pub struct EdgeState {
 
 impl EdgeState {
     /// Evaluates the edge quantities at `point`.
+    ///
+    /// Errors when `K_N` is not > 0 (a flat-rounded punch loaded so lightly that the contact
+    /// does not pass its flat): slip-zone sizes divide by it.
     pub fn at(contact: &Contact, point: &LoadPoint) -> Result<Self> {
         let a = contact.half_width(point.normal())?;
+        let normal_intensity = contact.normal_intensity(a)?;
+        if normal_intensity.is_nan() || normal_intensity <= 0.0 {
+            return Err(Error::InvalidInput {
+                field: "normal load".into(),
+                value: point.normal(),
+                valid: "a load whose edge intensity K_N is > 0 (the asymptotic description divides by it)",
+            });
+        }
         Ok(Self {
             half_width: a,
-            normal_intensity: contact.normal_intensity(a)?,
+            normal_intensity,
             shear_intensity: [Edge::Left, Edge::Right]
                 .map(|e| shear_intensity(point.shear(), point.bulk(), a, e)),
             equivalent_shear: [Edge::Left, Edge::Right]

@@ -23,10 +23,20 @@ impl Material {
                 valid: "a finite number with 0 <= nu < 0.5",
             });
         }
-        Ok(Self {
+        let material = Self {
             youngs_modulus,
             poisson_ratio,
-        })
+        };
+        // E below about 4/f64::MAX (subnormal-range moduli) passes the checks above but makes
+        // A = 4(1 - nu^2)/E overflow to infinity, which every half-width then inherits.
+        if !material.compliance().0.is_finite() {
+            return Err(Error::InvalidInput {
+                field: "material.youngs_modulus".into(),
+                value: youngs_modulus,
+                valid: "a finite number > 0 large enough that A = 4(1 - nu^2)/E is finite",
+            });
+        }
+        Ok(material)
     }
 
     /// Young's modulus E.
@@ -76,5 +86,22 @@ impl Friction {
     /// The value of f.
     pub fn value(self) -> f64 {
         self.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Fuzz finding (lib_steady): E = f64::MIN_POSITIVE was accepted and gave A = inf.
+    #[test]
+    fn modulus_whose_compliance_overflows_is_rejected() {
+        let e = Material::new(f64::MIN_POSITIVE, 1e-11).unwrap_err();
+        assert!(
+            matches!(e, Error::InvalidInput { ref field, .. } if field == "material.youngs_modulus")
+        );
+        // The smallest modulus with a finite compliance is still accepted.
+        let m = Material::new(4.0 / f64::MAX * 1.000_001, 0.0).unwrap();
+        assert!(m.compliance().value().is_finite());
     }
 }

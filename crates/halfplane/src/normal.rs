@@ -39,20 +39,45 @@ impl Contact {
 
     /// Normal load for contact half-width `a`:
     /// `P(a) = (1/A) integral_{-a}^{a} x g'(x)/sqrt(a^2 - x^2) dx` (THEORY.md "Normal problem").
+    /// Errors when P(a) is not finite and >= 0 (scales that overflow, or cancellation on a punch
+    /// whose flat is many orders of magnitude wider than a - b).
     pub fn load(&self, half_width: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
-        Ok(self.profile.symmetric_moment(half_width)?.0 / self.compliance().value())
+        let p = self.profile.symmetric_moment(half_width)?.0 / self.compliance().value();
+        in_range(
+            p,
+            p >= 0.0,
+            "contact half-width",
+            half_width,
+            "a half-width whose load P(a) is finite and >= 0 for this profile and material",
+        )
     }
 
     /// `dP/da`, exact for every profile (derivative of the same integral).
+    /// Errors when dP/da is not finite and >= 0, as [`Contact::load`].
     pub fn load_rate(&self, half_width: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
-        Ok(self.profile.symmetric_moment(half_width)?.1 / self.compliance().value())
+        let rate = self.profile.symmetric_moment(half_width)?.1 / self.compliance().value();
+        in_range(
+            rate,
+            rate >= 0.0,
+            "contact half-width",
+            half_width,
+            "a half-width whose load rate dP/da is finite and >= 0 for this profile and material",
+        )
     }
 
     /// Contact half-width for normal load `normal` > 0: closed form for Hertz and the power law,
     /// otherwise a bracketed Newton iteration on [`Contact::load`] to 1e-15 relative.
+    ///
+    /// Errors also when the inputs' scales make the half-width overflow or underflow (for
+    /// example P = 1e-300 on R = 1e-300), so an `Ok` half-width is always finite and > 0.
     pub fn half_width(&self, normal: f64) -> Result<f64> {
+        let a = self.solve_half_width(normal)?;
+        in_range(a, a > 0.0, "normal load", normal, "a load whose contact half-width is finite and > 0 for this profile and material (the scales overflow or underflow)")
+    }
+
+    fn solve_half_width(&self, normal: f64) -> Result<f64> {
         positive("normal load", normal)?;
         let a_comp = self.compliance().value();
         match self.profile.shape() {
@@ -149,7 +174,20 @@ impl Contact {
     /// slopes (Hertz, flat-rounded, tabulated) are then integrated exactly in closed form; the
     /// power law by 20-point Gauss-Legendre per piece, about 1e-6 relative near x = 0 for a
     /// non-integer exponent (no continuation across 0), exact to rounding elsewhere.
+    ///
+    /// Errors when the pressure is not finite (scales that overflow).
     pub fn pressure(&self, half_width: f64, x: f64) -> Result<f64> {
+        let p = self.solve_pressure(half_width, x)?;
+        in_range(
+            p,
+            true,
+            "contact half-width",
+            half_width,
+            "a half-width whose pressure is finite for this profile and material",
+        )
+    }
+
+    fn solve_pressure(&self, half_width: f64, x: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
         let a = half_width;
         crate::error::finite("position x", x)?;
@@ -211,6 +249,26 @@ impl Contact {
     /// Normal edge intensity `K_N = (1/pi) sqrt(2/a) dP/da`, with `p ~ K_N sqrt(s)` at distance s
     /// from an edge (paper, section "Asymptotic representation"; Fleury et al. 2017).
     pub fn normal_intensity(&self, half_width: f64) -> Result<f64> {
-        Ok((2.0 / half_width).sqrt() / PI * self.load_rate(half_width)?)
+        let k = (2.0 / half_width).sqrt() / PI * self.load_rate(half_width)?;
+        in_range(
+            k,
+            k >= 0.0,
+            "contact half-width",
+            half_width,
+            "a half-width whose edge intensity K_N is finite for this profile and material",
+        )
+    }
+}
+
+/// `Ok(value)` when it is finite and `ok` holds; otherwise the input that led to it is reported.
+fn in_range(value: f64, ok: bool, field: &str, input: f64, valid: &'static str) -> Result<f64> {
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(Error::InvalidInput {
+            field: field.to_string(),
+            value: input,
+            valid,
+        })
     }
 }

@@ -95,10 +95,25 @@ pub(crate) struct StickIntegrals {
     pub j1_e: f64,
 }
 
+/// A radius whose curvature 1/R is finite (R > ~5.6e-309; below that g' = x/R is infinite and
+/// its integrals NaN).
+fn curvature(radius: f64) -> Result<f64> {
+    positive("profile.radius", radius)?;
+    if (1.0 / radius).is_finite() {
+        Ok(1.0 / radius)
+    } else {
+        Err(Error::InvalidInput {
+            field: "profile.radius".into(),
+            value: radius,
+            valid: "a finite number > 0 whose curvature 1/R is finite",
+        })
+    }
+}
+
 impl Profile {
     /// Hertz profile of relative radius `radius` > 0.
     pub fn hertz(radius: f64) -> Result<Self> {
-        positive("profile.radius", radius)?;
+        curvature(radius)?;
         let piece = Piece {
             start: 0.0,
             end: f64::INFINITY,
@@ -121,7 +136,7 @@ impl Profile {
                 valid: "a finite number >= 0",
             });
         }
-        positive("profile.radius", edge_radius)?;
+        curvature(edge_radius)?;
         let b = flat_half_width;
         let mut pieces = Vec::new();
         if b > 0.0 {
@@ -787,6 +802,17 @@ impl PowerSlope {
 
 #[cfg(test)]
 mod tests {
+    /// Fuzz finding (lib_steady): an edge radius of 5e-324 was accepted; 1/R = inf made the
+    /// moments NaN (P(a) = NaN for a flat-rounded punch with b = 1, a = 2).
+    #[test]
+    fn radius_with_infinite_curvature_is_rejected() {
+        for r in [5e-324, 1e-310] {
+            assert!(super::Profile::hertz(r).is_err());
+            assert!(super::Profile::flat_rounded(1.0, r).is_err());
+        }
+        assert!(super::Profile::hertz(1e-300).is_ok());
+    }
+
     use super::*;
 
     /// Independent check of the exact piecewise route: composite Gauss-Legendre in theta on the

@@ -136,3 +136,19 @@ fn the_papers_printed_delta_a_sign_does_not_converge() {
         "printed form {printed} vs exact {exact}"
     );
 }
+
+/// Fuzz finding (lib_steady): a flat-rounded punch (b = 0.5) at P = 5e-324 has a = b and
+/// K_N = 0, and the slip-zone sizes divided by it came out infinite. Now a typed error.
+#[test]
+fn zero_edge_intensity_is_an_error_not_an_infinite_slip_zone() {
+    let contact = halfplane::Contact::new(
+        Profile::flat_rounded(0.5, 0.4999999999999999).unwrap(),
+        halfplane::Material::new(1e-8, 1e-8).unwrap(),
+        halfplane::Friction::new(1e-8).unwrap(),
+    );
+    let cycle = Cycle::new(
+        point(5e-324, 2.220446049250313e-16, 0.0),
+        point(1.0, 0.0, 0.0),
+    );
+    assert!(asymptotic::steady(&contact, &cycle).is_err());
+}

@@ -3,7 +3,7 @@
 mod common;
 use common::*;
 use halfplane::closed_form;
-use halfplane::Profile;
+use halfplane::{Contact, Friction, Material, Profile};
 use std::f64::consts::PI;
 
 #[test]
@@ -135,4 +135,33 @@ fn contact_beyond_a_table_is_an_error_not_an_extrapolation() {
     let err = c.half_width(5000.0).unwrap_err();
     assert!(matches!(err, halfplane::Error::BeyondTable { .. }), "{err}");
     assert!(err.to_string().contains("extend the table"), "{err}");
+}
+
+/// Fuzz findings (lib_steady): extreme but valid inputs gave `Ok` half-widths of 0 or infinity
+/// and loads of NaN or below zero; each now is a typed error.
+#[test]
+fn scales_that_overflow_or_underflow_are_errors_not_values() {
+    let material = Material::new(200_000.0, 0.3).unwrap();
+    let friction = Friction::new(0.6).unwrap();
+    let hertz = |r: f64| Contact::new(Profile::hertz(r).unwrap(), material, friction);
+    // a = sqrt(2 P A R / pi) underflows to 0 ...
+    assert!(hertz(1e-300).half_width(1e-300).is_err());
+    // ... or overflows.
+    assert!(hertz(1e300).half_width(1e300).is_err());
+    // P(a) and dP/da overflow.
+    assert!(hertz(1e-300).load(1e300).is_err());
+    assert!(hertz(1e-300).normal_intensity(1e300).is_err());
+    // A flat 1e13 times wider than a - b: the moment cancels to a negative load.
+    let flat = Contact::new(
+        Profile::flat_rounded(6686747539482.72, 0.4999999999999999).unwrap(),
+        material,
+        friction,
+    );
+    match flat.load(6686747539482.721) {
+        Ok(p) => assert!(p.is_finite() && p >= 0.0, "P = {p}"),
+        Err(e) => assert!(matches!(e, halfplane::Error::InvalidInput { .. })),
+    }
+    // Ordinary scales are unaffected.
+    let a = hertz(50.0).half_width(1000.0).unwrap();
+    assert!((hertz(50.0).load(a).unwrap() - 1000.0).abs() < 1e-9);
 }

@@ -1,0 +1,96 @@
+//! Library entry points on arbitrary floats (finite, huge, tiny, NaN, infinite): Material::new,
+//! the Profile constructors, Contact::half_width / load / pressure / normal_intensity,
+//! steady::analyse (both methods), asymptotic::steady and evolution::evolve (2-7 points).
+#![no_main]
+
+use arbitrary::Arbitrary;
+use halfplane::steady::Method;
+use halfplane::{
+    analyse, asymptotic, evolution, Contact, Cycle, Friction, LoadPoint, Material, SteadyOptions,
+};
+use halfplane_fuzz::{
+    check_asymptotic, check_contact, check_evolution, check_half_width, check_steady,
+    sticks_at_both_ends, Num, ProfileInput,
+};
+use libfuzzer_sys::fuzz_target;
+
+#[derive(Debug, Arbitrary)]
+struct Input {
+    youngs_modulus: Num,
+    poisson_ratio: Num,
+    friction: Num,
+    profile: ProfileInput,
+    points: [[Num; 3]; 2],
+    x: Num,
+    points_per_half: u8,
+    implicit: bool,
+}
+
+fuzz_target!(|input: Input| {
+    let (Ok(material), Ok(friction), Ok(profile)) = (
+        Material::new(input.youngs_modulus.0, input.poisson_ratio.0),
+        Friction::new(input.friction.0),
+        input.profile.build(),
+    ) else {
+        return;
+    };
+    let contact = Contact::new(profile, material, friction);
+    check_contact(&contact);
+    let mut loads = Vec::new();
+    for (i, p) in input.points.iter().enumerate() {
+        let normal = p[0].0;
+        if let Ok(a) = contact.half_width(normal) {
+            check_half_width(a, &(normal, &contact));
+            if let Ok(back) = contact.load(a) {
+                assert!(
+                    back.is_finite() && back >= 0.0,
+                    "P({a}) = {back} for {contact:?}"
+                );
+            }
+            if let Ok(k) = contact.normal_intensity(a) {
+                assert!(k.is_finite(), "K_N({a}) = {k} for {contact:?}");
+            }
+            let x = input.x.0;
+            for x in [x, x * a] {
+                if let Ok(p) = contact.pressure(a, x) {
+                    assert!(
+                        p.is_finite() && p >= 0.0,
+                        "p({x}) = {p} at a = {a} for {contact:?}"
+                    );
+                }
+            }
+        }
+        if let Ok(l) = LoadPoint::new(
+            if i == 0 { "first" } else { "second" },
+            normal,
+            p[1].0,
+            p[2].0,
+        ) {
+            loads.push(l);
+        }
+    }
+    let [first, second] = loads[..] else {
+        return;
+    };
+    let cycle = Cycle::new(first, second);
+    let options = SteadyOptions {
+        method: if input.implicit {
+            Method::Implicit
+        } else {
+            Method::Auto
+        },
+        ..SteadyOptions::default()
+    };
+    if let Ok(s) = analyse(&contact, &cycle, &options) {
+        check_steady(&s);
+    }
+    if let Ok(a) = asymptotic::steady(&contact, &cycle) {
+        if sticks_at_both_ends(&contact, &cycle) {
+            check_asymptotic(&a);
+        }
+    }
+    let points = 2 + usize::from(input.points_per_half % 6);
+    if let Ok(e) = evolution::evolve(&contact, &cycle, points, &options) {
+        check_evolution(&e);
+    }
+});
