@@ -366,16 +366,23 @@ impl HalfPath<'_> {
 /// below `min(a_s, a(t))`.
 pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Result<()> {
     let f = contact.friction.value();
-    let (first, second) = cycle.as_given();
-    let half_width = [
-        contact.half_width(first.normal())?,
-        contact.half_width(second.normal())?,
-    ];
+    let (low, high) = (cycle.low(), cycle.high());
     let (d_q, d_sigma) = (cycle.shear_range(), cycle.bulk_range());
-    let halves = [
-        (1u8, first, second, half_width[0]),
-        (2u8, second, first, half_width[1]),
+    // The half that starts from the larger contact first (where the weak edge binds; Q rising
+    // first on a tie), so that the failure reported does not depend on the order the points
+    // were given in; `half` numbers it as given.
+    let (rising, falling) = if cycle.swapped() {
+        (2u8, 1u8)
+    } else {
+        (1u8, 2u8)
+    };
+    let mut halves = [
+        (rising, low, high, contact.half_width(low.normal())?),
+        (falling, high, low, contact.half_width(high.normal())?),
     ];
+    if halves[1].3 > halves[0].3 {
+        halves.swap(0, 1);
+    }
     // The start of each half first: exact, and where a failure is most often found.
     for (half, start, end, a_s) in halves {
         let d_p = end.normal() - start.normal();
@@ -444,7 +451,10 @@ pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOption
                     first_failure = Some((hi, edge_index));
                 }
             }
-            let (fraction, edge_index) = first_failure.expect("a failing margin was found");
+            // At least one margin failed at t, so its bisection set first_failure.
+            let Some((fraction, edge_index)) = first_failure else {
+                continue;
+            };
             let q = path.at(fraction, guess)?;
             return Err(Error::SlipReversesInHalf {
                 half,

@@ -200,6 +200,17 @@ proptest! {
                 prop_assert_eq!(a.criteria, b.criteria);
                 prop_assert_eq!(a.iterations, b.iterations);
             }
+            (Err(a), Err(Error::SlipReversesInHalf { half, edge, fraction, boundary_rate, limit_rate })) => {
+                // Half 1 runs from the first point as given: swapping renumbers the halves.
+                let b = Error::SlipReversesInHalf {
+                    half: 3 - half,
+                    edge: *edge,
+                    fraction: *fraction,
+                    boundary_rate: *boundary_rate,
+                    limit_rate: *limit_rate,
+                };
+                prop_assert_eq!(a, &b);
+            }
             (Err(a), Err(b)) => prop_assert_eq!(a, b),
             _ => prop_assert!(false, "given {given:?} but swapped {swapped:?}"),
         }
