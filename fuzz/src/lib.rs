@@ -161,16 +161,13 @@ pub fn check_steady(s: &SteadyState) {
     }
     let c = &s.criteria;
     finite("friction", c.friction, s);
-    // FINDINGS.md F4 (steady.rs, routed): |Q|/P, (dQ + bulk)/dP and pi a_max |dsigma|/4
-    // overflow to +inf for P or dP near f64::MIN_POSITIVE or |Q|, |sigma| near f64::MAX.
-    // Tolerated as +inf until fixed; NaN and negative values still fail.
-    for r in c
-        .shear_ratio
-        .iter()
-        .chain([&c.full_stick_ratio, &c.bulk_term])
-    {
+    // FINDINGS.md F4 (fixed by the 1e-30..1e30 input range): only full_stick_ratio may be
+    // infinite, and only when dP = 0.
+    for r in c.shear_ratio.iter().chain([&c.bulk_term]) {
+        finite("criterion", *r, s);
         assert!(*r >= 0.0, "criterion ratio {r} in {s:?}");
     }
+    assert!(c.full_stick_ratio >= 0.0, "full-stick ratio {} in {s:?}", c.full_stick_ratio);
     if let Some(z) = s.stick_zone {
         finite("stick zone left", z.left, s);
         finite("stick zone right", z.right, s);
@@ -183,15 +180,13 @@ pub fn check_steady(s: &SteadyState) {
     }
 }
 
-/// True when `|Q| < f P` at both ends and |Q|, |sigma| < 1e300. FINDINGS.md F6 (routed):
-/// `asymptotic::steady` does not check gross sliding, and K_T = Q/(pi sqrt(2a)) overflows for
-/// |Q| near f64::MAX, giving Ok results with K_T = -inf and NaN slip zones; its results are
-/// checked only outside that range until it is fixed.
+/// True when `|Q| < f P` at both ends (FINDINGS.md F6, fixed: `asymptotic::steady` now returns
+/// `GrossSliding` otherwise).
 pub fn sticks_at_both_ends(contact: &Contact, cycle: &halfplane::Cycle) -> bool {
     let f = contact.friction.value();
-    [cycle.low(), cycle.high()].iter().all(|p| {
-        p.shear().abs() < f * p.normal() && p.shear().abs() < 1e300 && p.bulk().abs() < 1e300
-    })
+    [cycle.low(), cycle.high()]
+        .iter()
+        .all(|p| p.shear().abs() < f * p.normal())
 }
 
 /// Every number of the asymptotic description is finite.
@@ -199,10 +194,8 @@ pub fn check_asymptotic(a: &AsymptoticSteady) {
     for e in &a.edges {
         check_half_width(e.half_width, a);
         finite("K_N", e.normal_intensity, a);
-        // F6: K_T = Q/(pi sqrt(2a)) overflows for large |Q| on tiny contacts (Q = 1e294,
-        // a = 2e-154); tolerated as +-inf until fixed, NaN still fails.
         for v in e.shear_intensity.iter().chain(&e.equivalent_shear) {
-            assert!(!v.is_nan(), "edge value NaN in {a:?}");
+            finite("edge value", *v, a);
         }
     }
     for v in a
@@ -212,10 +205,10 @@ pub fn check_asymptotic(a: &AsymptoticSteady) {
     {
         finite("asymptotic value", *v, a);
     }
-    // FINDINGS.md F5 (routed): w = |dK_T|/(f K_N) + da/2 is +inf when f K_N underflows
-    // (subnormal K_N) and NaN when it underflows to 0 with dK_T = 0 (a = 1.6e142). The slip
-    // zones are not checked until that is fixed.
-    let _ = a.slip_zones;
+    // FINDINGS.md F5 (fixed by the input range: f K_N can no longer underflow).
+    for v in a.slip_zones.iter().flatten() {
+        finite("asymptotic slip zone", *v, a);
+    }
 }
 
 /// Every point of an evolution is finite.
@@ -225,7 +218,9 @@ pub fn check_evolution(e: &Evolution) {
         for v in [p.fraction, p.stick_zone.left, p.stick_zone.right] {
             finite("evolution value", v, p);
         }
-        // The asymptotic zone inherits F5 and is not checked until it is fixed.
+        for v in [p.asymptotic_stick_zone.left, p.asymptotic_stick_zone.right] {
+            finite("asymptotic evolution value", v, p);
+        }
     }
 }
 

@@ -122,10 +122,21 @@ pub struct AsymptoticSteady {
     pub slip_zones: [[f64; 2]; 2],
 }
 
-/// Evaluates the asymptotic description of the cycle.
+/// Evaluates the asymptotic description of the cycle. Errors: [`Error::GrossSliding`] when an
+/// end slides (there is no edge description), [`Error::AsymptoticBreakdown`] when `P_K <= 0`.
 pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
     let f = contact.friction.value();
     let (first, second) = cycle.as_given();
+    // The edge description assumes partial slip: a sliding end has no stick zone to describe.
+    for (point, p) in [("first", first), ("second", second)] {
+        if p.shear().abs() >= f * p.normal() {
+            return Err(Error::GrossSliding {
+                point,
+                shear: p.shear().abs(),
+                limit: f * p.normal(),
+            });
+        }
+    }
     let edges = [
         EdgeState::at(contact, &first)?,
         EdgeState::at(contact, &second)?,

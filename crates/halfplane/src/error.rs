@@ -209,6 +209,39 @@ pub enum Error {
 /// Shorthand used throughout the crate.
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// The largest magnitude accepted for a physical input, and (for the ones that must be positive)
+/// the smallest. Every consistent unit system fits with room to spare (E = 2e11 Pa or 200 GPa,
+/// lengths from nanometres to kilometres), and products and quotients of a few inputs then stay
+/// far inside the range of f64: no derived quantity (A, a, K_N, K_T, |Q|/P, energies) can
+/// overflow to infinity or underflow to zero.
+pub const MAGNITUDE_LIMIT: f64 = 1e30;
+
+/// Rejects a value that is not finite or whose magnitude exceeds [`MAGNITUDE_LIMIT`].
+pub(crate) fn physical(field: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value.abs() <= MAGNITUDE_LIMIT {
+        Ok(value)
+    } else {
+        Err(Error::InvalidInput {
+            field: field.to_string(),
+            value,
+            valid: "a finite number of magnitude at most 1e30",
+        })
+    }
+}
+
+/// Rejects a value outside `[1/MAGNITUDE_LIMIT, MAGNITUDE_LIMIT]` (see [`MAGNITUDE_LIMIT`]).
+pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && (1.0 / MAGNITUDE_LIMIT..=MAGNITUDE_LIMIT).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::InvalidInput {
+            field: field.to_string(),
+            value,
+            valid: "a finite number from 1e-30 to 1e30",
+        })
+    }
+}
+
 /// Rejects a non-finite or non-positive value.
 pub(crate) fn positive(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {

@@ -4,7 +4,7 @@
 //! Every history starts from zero load (nothing in contact); its first point is reached in one
 //! increment, so generated histories begin with a ramp.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{physical, Error, Result};
 use crate::load::LoadPoint;
 use std::f64::consts::PI;
 
@@ -79,7 +79,7 @@ pub enum Ramp {
 
 /// `mean + amplitude sin(2 pi t + phase)`, t in cycles, phase in degrees.
 ///
-/// Valid by construction: all three are finite.
+/// Valid by construction: all three are finite, of magnitude at most 1e30.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Harmonic {
     mean: f64,
@@ -91,9 +91,9 @@ impl Harmonic {
     /// Validates that all three are finite. `name` prefixes the field names in errors (for
     /// example `history.normal`).
     pub fn new(name: &str, mean: f64, amplitude: f64, phase: f64) -> Result<Self> {
-        finite(&format!("{name}.mean"), mean)?;
-        finite(&format!("{name}.amplitude"), amplitude)?;
-        finite(&format!("{name}.phase"), phase)?;
+        physical(&format!("{name}.mean"), mean)?;
+        physical(&format!("{name}.amplitude"), amplitude)?;
+        physical(&format!("{name}.phase"), phase)?;
         Ok(Self {
             mean,
             amplitude,

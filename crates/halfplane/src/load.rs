@@ -5,11 +5,12 @@
 //! the paper's Figure 1. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
 //! so `dQ = Q2 - Q1 >= 0`, and the paper's `dsigma = sigma1 - sigma2`.
 
-use crate::error::{finite, positive, Result};
+use crate::error::{physical, physical_positive, Result, MAGNITUDE_LIMIT};
 
 /// Normal force P (> 0), shear force Q (force per unit thickness) and bulk tension sigma (stress).
 ///
-/// Valid by construction: P is finite and > 0, Q and sigma are finite.
+/// Valid by construction: 1e-30 <= P <= 1e30 and |Q|, |sigma| <= 1e30
+/// ([`crate::error::MAGNITUDE_LIMIT`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadPoint {
     normal: f64,
@@ -21,9 +22,9 @@ impl LoadPoint {
     /// Validates P > 0 and that all three are finite. `name` prefixes the field names in errors
     /// (for example `cycle.point1`).
     pub fn new(name: &str, normal: f64, shear: f64, bulk: f64) -> Result<Self> {
-        positive(&format!("{name}.normal"), normal)?;
-        finite(&format!("{name}.shear"), shear)?;
-        finite(&format!("{name}.bulk"), bulk)?;
+        physical_positive(&format!("{name}.normal"), normal)?;
+        physical(&format!("{name}.shear"), shear)?;
+        physical(&format!("{name}.bulk"), bulk)?;
         Ok(Self {
             normal,
             shear,
@@ -61,7 +62,8 @@ impl LoadPoint {
     }
 
     /// The point a fraction `t` in (0, 1] of the way from zero load to `self` (a proportional ramp
-    /// from the unloaded state). `t` is clamped to [tiny, 1] so that P stays > 0.
+    /// from the unloaded state). `t` is clamped to [tiny, 1] and P to at least 1e-30, so that the
+    /// point stays valid.
     pub fn scaled(&self, t: f64) -> LoadPoint {
         let t = if t.is_nan() {
             1.0
@@ -69,7 +71,7 @@ impl LoadPoint {
             t.clamp(f64::MIN_POSITIVE, 1.0)
         };
         LoadPoint {
-            normal: (t * self.normal).max(f64::MIN_POSITIVE),
+            normal: (t * self.normal).max(1.0 / MAGNITUDE_LIMIT),
             shear: t * self.shear,
             bulk: t * self.bulk,
         }
