@@ -257,9 +257,10 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let case = case::load(&case)?;
             let march_options = |case: &case::Case| case.solver_with_cells(cells);
+            let units = halfplane_plot::Units::default();
             let fig = match figure {
                 FigureKind::LoadSpace => {
-                    halfplane_plot::load_space_figure(&case.contact, &case.cycle()?)?
+                    halfplane_plot::load_space_figure(&case.contact, &case.cycle()?, &units)?
                 }
                 FigureKind::SlipMap => {
                     let p1 = normal.unwrap_or_else(|| {
@@ -276,7 +277,7 @@ fn run(cli: Cli) -> Result<()> {
                         tensions,
                         samples: 60,
                     };
-                    halfplane_plot::slip_map_figure(&case.contact, &map)?
+                    halfplane_plot::slip_map_figure(&case.contact, &map, &units)?
                 }
                 FigureKind::Evolution => {
                     let cycle = case.cycle()?;
@@ -293,7 +294,7 @@ fn run(cli: Cli) -> Result<()> {
                     } else {
                         None
                     };
-                    halfplane_plot::evolution_figure(&ev, marched.as_ref())
+                    halfplane_plot::evolution_figure(&ev, marched.as_ref(), &units)
                 }
                 FigureKind::MarchFields | FigureKind::MarchZones => {
                     let history = case.history()?;
@@ -338,9 +339,9 @@ fn run(cli: Cli) -> Result<()> {
                     )?;
                     match figure {
                         FigureKind::MarchFields => {
-                            halfplane_plot::march_fields_figure(&recorder.kept)
+                            halfplane_plot::march_fields_figure(&recorder.kept, &units)
                         }
-                        _ => halfplane_plot::march_zones_figure(&result),
+                        _ => halfplane_plot::march_zones_figure(&result, &units),
                     }
                 }
             };

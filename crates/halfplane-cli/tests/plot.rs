@@ -2,12 +2,92 @@
 
 mod common;
 use common::*;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
-fn out(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("halfplane-cli-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("output directory");
-    dir.join(name)
+/// A scratch directory of this test process, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir =
+            std::env::temp_dir().join(format!("halfplane-cli-plot-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("output directory");
+        Self(dir)
+    }
+
+    fn out(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Width and height from a PNG's header.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
+    let word = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    (word(16), word(20))
+}
+
+/// Every figure in the README is the output of the command above it: each `plot` command the
+/// README shows runs from the repository root and writes a PNG of the committed picture's size,
+/// and every committed picture in docs/ has such a command. (Pixels are not compared: they depend
+/// on font rasterisation. The size includes the legend strip, so it also changes when a legend
+/// moves between a corner and below the panels.)
+#[test]
+fn every_readme_figure_command_writes_a_png_of_the_committed_size() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let commands: Vec<Vec<&str>> = readme
+        .lines()
+        .filter_map(|l| {
+            l.trim()
+                .strip_prefix("cargo run --release -p halfplane-cli -- ")
+        })
+        .filter(|c| c.starts_with("plot "))
+        .map(|c| c.split_whitespace().collect())
+        .collect();
+    let target = |c: &[&str]| c[c.iter().position(|a| *a == "-o").expect("-o") + 1].to_string();
+    let mut drawn: Vec<String> = commands.iter().map(|c| target(c)).collect();
+    drawn.sort();
+    let mut committed: Vec<String> = std::fs::read_dir(root.join("docs"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".png"))
+        .map(|n| format!("docs/{n}"))
+        .collect();
+    committed.sort();
+    assert_eq!(drawn, committed, "README plot commands against docs/*.png");
+    let scratch = Scratch::new("readme");
+    std::thread::scope(|s| {
+        for c in &commands {
+            let scratch = &scratch;
+            let root = &root;
+            s.spawn(move || {
+                let docs = target(c);
+                let out = scratch.out(Path::new(&docs).file_name().unwrap().to_str().unwrap());
+                let args: Vec<&str> = c
+                    .iter()
+                    .map(|a| if *a == docs { out.to_str().unwrap() } else { a })
+                    .collect();
+                let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
+                    .args(&args)
+                    .current_dir(root)
+                    .output()
+                    .expect("run halfplane");
+                assert!(o.status.success(), "{c:?}: {}", stderr(&o));
+                let ours = png_size(&std::fs::read(&out).unwrap());
+                let theirs = png_size(&std::fs::read(root.join(&docs)).unwrap());
+                assert_eq!(ours, theirs, "{docs}: regenerate it with {c:?}");
+            });
+        }
+    });
 }
 
 #[test]
@@ -66,8 +146,9 @@ fn every_figure_is_written_with_its_series() {
             &["contact edges ±a", "stick", "increment"],
         ),
     ];
+    let scratch = Scratch::new("figures");
     for (figure, case, extra, needles) in cases {
-        let path = out(&format!("{figure}.svg"));
+        let path = scratch.out(&format!("{figure}.svg"));
         let case_path = example(case);
         let mut args = vec![
             "plot",
@@ -84,7 +165,7 @@ fn every_figure_is_written_with_its_series() {
             assert!(svg.contains(n), "{figure}: {n:?} not in the SVG");
         }
     }
-    let png = out("map.png");
+    let png = scratch.out("map.png");
     let o = run(&[
         "plot",
         "load-space",
@@ -93,13 +174,14 @@ fn every_figure_is_written_with_its_series() {
         png.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    assert_eq!(png_size(&std::fs::read(&png).unwrap()).0, 1280);
 }
 
 #[test]
 fn bad_plot_requests_are_clear_errors() {
     let (hertz, history) = (example("hertz.toml"), example("march-history.toml"));
-    let (gif, svg) = (out("x.gif"), out("y.svg"));
+    let scratch = Scratch::new("bad");
+    let (gif, svg) = (scratch.out("x.gif"), scratch.out("y.svg"));
     let (gif, svg) = (gif.to_str().unwrap(), svg.to_str().unwrap());
     let cases: [(&[&str], &[&str]); 6] = [
         (

@@ -7,7 +7,7 @@
 
 mod render;
 
-pub use render::{write, Figure, Legend, Panel, Series, Style};
+pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 
 use halfplane::asymptotic::{equivalent_shear, Edge};
 use halfplane::evolution::Evolution;
@@ -44,10 +44,37 @@ pub enum PlotError {
     Request(String),
 }
 
+/// Names of the units the axis labels show. The numbers are drawn as given: these only label them,
+/// so they must be the units the case was written in.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Units {
+    /// Force per unit length (P, Q): "N/mm" by default.
+    pub force_per_length: String,
+    /// Length (x, a, slip): "mm" by default.
+    pub length: String,
+    /// Stress (sigma, traction): "MPa" by default.
+    pub stress: String,
+}
+
+impl Default for Units {
+    fn default() -> Self {
+        Self {
+            force_per_length: "N/mm".into(),
+            length: "mm".into(),
+            stress: "MPa".into(),
+        }
+    }
+}
+
 /// Load space (the paper's Figure 2 and the P-S figure): the trajectory in P-Q with the friction
 /// lines Q = +/- f P and the end points marked, and the P-S trajectories of the two edges,
 /// `S = Q +/- pi a sigma/4` (left +, right -), sampled along the in-phase segment.
-pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, PlotError> {
+pub fn load_space_figure(
+    contact: &Contact,
+    cycle: &Cycle,
+    units: &Units,
+) -> Result<Figure, PlotError> {
+    let force = &units.force_per_length;
     let f = contact.friction.value();
     let (p1, p2) = cycle.as_given();
     let p_max = 1.15 * p1.normal().max(p2.normal());
@@ -102,17 +129,17 @@ pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, Plo
         title: "Load space".into(),
         panels: vec![
             Panel {
-                legend: Legend::LowerLeft,
+                legend: Legend::Auto,
                 title: "P–Q trajectory".into(),
-                x_label: "normal load P (N/mm)".into(),
-                y_label: "shear load Q (N/mm)".into(),
+                x_label: format!("normal load P ({force})"),
+                y_label: format!("shear load Q ({force})"),
                 series: pq,
             },
             Panel {
-                legend: Legend::LowerLeft,
+                legend: Legend::Auto,
                 title: "P–S trajectories of the edges".into(),
-                x_label: "normal load P (N/mm)".into(),
-                y_label: "equivalent shear S (N/mm)".into(),
+                x_label: format!("normal load P ({force})"),
+                y_label: format!("equivalent shear S ({force})"),
                 series: ps,
             },
         ],
@@ -122,13 +149,13 @@ pub fn load_space_figure(contact: &Contact, cycle: &Cycle) -> Result<Figure, Plo
 /// Parameters of the slip-zone map (the paper's Figure 5).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SlipMap {
-    /// Normal load at point 1, P1 (N/mm).
+    /// Normal load at point 1, P1 (force per length).
     pub normal: f64,
     /// Friction coefficients, one panel each (the paper: 0.3 and 0.6).
     pub frictions: Vec<f64>,
     /// P2/P1 values.
     pub ratios: Vec<f64>,
-    /// dsigma/P1 values (1/mm), with dsigma = sigma1 - sigma2.
+    /// dsigma/P1 values (1/length), with dsigma = sigma1 - sigma2.
     pub tensions: Vec<f64>,
     /// Points along dQ/(f P0) in (0, 1).
     pub samples: usize,
@@ -143,7 +170,11 @@ pub struct SlipMap {
 /// through a half-cycle, stick zone outside the contact) are left out, so curves may stop early;
 /// with tension they stop short of the full-stick limit, since monotone growth needs
 /// `dQ - pi a_max |dsigma|/4 > f |dP|` (`docs/validity.md`).
-pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotError> {
+pub fn slip_map_figure(
+    contact: &Contact,
+    map: &SlipMap,
+    units: &Units,
+) -> Result<Figure, PlotError> {
     let mut panels = Vec::new();
     for &f in &map.frictions {
         let friction = Friction::new(f)?;
@@ -206,7 +237,7 @@ pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotE
             }
         }
         panels.push(Panel {
-            legend: Legend::UpperLeft,
+            legend: Legend::Auto,
             title: format!("f = {f}"),
             x_label: "ΔQ/(f P0)".into(),
             y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
@@ -214,7 +245,10 @@ pub fn slip_map_figure(contact: &Contact, map: &SlipMap) -> Result<Figure, PlotE
         });
     }
     Ok(Figure {
-        title: format!("Slip-zone map (P1 = {} N/mm)", map.normal),
+        title: format!(
+            "Slip-zone map (P1 = {} {})",
+            map.normal, units.force_per_length
+        ),
         panels,
     })
 }
@@ -256,7 +290,11 @@ impl MarchedCycle {
 /// edge, exact stick boundary (partial-path relation), asymptotic estimate and, when given, the
 /// marching solver's stick interval, against the time t in cycles (half 1: 0-1, half 2: 1-2).
 /// One panel per edge, so the slip zones (between the lines) are large enough to read.
-pub fn evolution_figure(evolution: &Evolution, marched: Option<&MarchedCycle>) -> Figure {
+pub fn evolution_figure(
+    evolution: &Evolution,
+    marched: Option<&MarchedCycle>,
+    units: &Units,
+) -> Figure {
     let t = |p: &halfplane::evolution::EvolutionPoint| (p.half - 1) as f64 + p.fraction;
     let pts = &evolution.points;
     let line = |f: &dyn Fn(&halfplane::evolution::EvolutionPoint) -> f64| {
@@ -310,14 +348,14 @@ pub fn evolution_figure(evolution: &Evolution, marched: Option<&MarchedCycle>) -
             }),
         ));
         Panel {
-            legend: Legend::UpperLeft,
+            legend: Legend::Auto,
             title: if right {
                 "right edge: a and n".into()
             } else {
                 "left edge: −a and −m".into()
             },
             x_label: "time t (cycles): point 1 → 2 → 1".into(),
-            y_label: "position x (mm)".into(),
+            y_label: format!("position x ({})", units.length),
             series,
         }
     };
@@ -368,7 +406,7 @@ impl FieldRecorder {
 
 /// Shear traction (with the friction limits f p dashed) and accumulated slip along x at the
 /// recorded increments.
-pub fn march_fields_figure(fields: &[StepFields]) -> Figure {
+pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
     let mut traction = Vec::new();
     let mut slip = Vec::new();
     for (i, f) in fields.iter().enumerate() {
@@ -402,17 +440,17 @@ pub fn march_fields_figure(fields: &[StepFields]) -> Figure {
         title: "Time marching: fields along the contact".into(),
         panels: vec![
             Panel {
-                legend: Legend::UpperRight,
+                legend: Legend::Auto,
                 title: "shear traction".into(),
-                x_label: "position x (mm)".into(),
-                y_label: "traction q (MPa)".into(),
+                x_label: format!("position x ({})", units.length),
+                y_label: format!("traction q ({})", units.stress),
                 series: traction,
             },
             Panel {
-                legend: Legend::UpperRight,
+                legend: Legend::Auto,
                 title: "accumulated slip".into(),
-                x_label: "position x (mm)".into(),
-                y_label: "slip (mm)".into(),
+                x_label: format!("position x ({})", units.length),
+                y_label: format!("slip ({})", units.length),
                 series: slip,
             },
         ],
@@ -421,7 +459,7 @@ pub fn march_fields_figure(fields: &[StepFields]) -> Figure {
 
 /// Stick and slip zones against increment number: contact edges, and every stick interval as a
 /// vertical bar at its increment (the rest of the contact slips).
-pub fn march_zones_figure(result: &MarchResult) -> Figure {
+pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
     let edges = |sign: f64| {
         result
             .steps
@@ -441,10 +479,10 @@ pub fn march_zones_figure(result: &MarchResult) -> Figure {
     Figure {
         title: "Time marching: stick and slip zones".into(),
         panels: vec![Panel {
-            legend: Legend::UpperRight,
+            legend: Legend::Auto,
             title: "stick intervals (bars); slip between them and the contact edges".into(),
             x_label: "increment".into(),
-            y_label: "position x (mm)".into(),
+            y_label: format!("position x ({})", units.length),
             series: vec![
                 Series {
                     name: "contact edges ±a".into(),

@@ -6,7 +6,6 @@ use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions};
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, SteadyOptions};
 use halfplane_plot::*;
-use std::path::PathBuf;
 
 fn contact() -> Contact {
     Contact::new(
@@ -23,10 +22,8 @@ fn cycle() -> Cycle {
     )
 }
 
-fn out(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("halfplane-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+fn units() -> Units {
+    Units::default()
 }
 
 fn names(f: &Figure) -> Vec<String> {
@@ -37,12 +34,69 @@ fn names(f: &Figure) -> Vec<String> {
         .collect()
 }
 
-/// Writes the figure as SVG and checks that every legend name and one polyline per line series is
-/// in the file.
-fn check_svg(f: &Figure, name: &str) -> String {
-    let path = out(name);
-    write(f, &path).unwrap();
-    let svg = std::fs::read_to_string(&path).unwrap();
+/// A `<polyline>` of the SVG: stroke colour, stroke width and number of points.
+#[derive(Debug, PartialEq)]
+struct Polyline {
+    stroke: String,
+    width: String,
+    points: usize,
+}
+
+fn attribute<'a>(element: &'a str, name: &str) -> &'a str {
+    let key = format!(" {name}=\"");
+    let start = element
+        .find(&key)
+        .unwrap_or_else(|| panic!("no {name} in {element}"))
+        + key.len();
+    let len = element[start..].find('"').unwrap();
+    &element[start..start + len]
+}
+
+fn elements<'a>(svg: &'a str, tag: &str) -> Vec<&'a str> {
+    svg.match_indices(&format!("<{tag} "))
+        .map(|(i, _)| &svg[i..i + svg[i..].find("/>").unwrap()])
+        .collect()
+}
+
+/// The contents of the SVG's `<text>` elements.
+fn texts(svg: &str) -> Vec<&str> {
+    svg.split("<text ")
+        .skip(1)
+        .map(|t| {
+            let body = &t[t.find('>').unwrap() + 1..];
+            body[..body.find("</text>").unwrap()].trim()
+        })
+        .collect()
+}
+
+fn polylines(svg: &str) -> Vec<Polyline> {
+    elements(svg, "polyline")
+        .into_iter()
+        .map(|e| Polyline {
+            stroke: attribute(e, "stroke").to_string(),
+            width: attribute(e, "stroke-width").to_string(),
+            points: attribute(e, "points").split_whitespace().count(),
+        })
+        .collect()
+}
+
+fn hex(color: usize) -> String {
+    let (r, g, b) = palette(color);
+    format!("#{r:02X}{g:02X}{b:02X}")
+}
+
+/// Renders the figure as SVG and checks that every legend name and axis title is in it, and that
+/// every series is drawn with its data: each solid piece as a polyline of its colour with exactly
+/// as many points as the piece, each dashed piece as dashes of its colour, each marker and each
+/// segment of its colour. (The axes alone are 2-point polylines of width 1, so an empty figure
+/// fails.)
+fn check_svg(f: &Figure) -> String {
+    let (svg, _) = render_svg(f).unwrap();
+    check_drawn(f, &svg);
+    svg
+}
+
+fn check_drawn(f: &Figure, svg: &str) {
     assert!(
         svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"),
         "not an SVG document"
@@ -52,10 +106,7 @@ fn check_svg(f: &Figure, name: &str) -> String {
             .replace('&', "&amp;")
             .replace('<', "&lt;")
             .replace('>', "&gt;");
-        assert!(
-            svg.contains(&escaped),
-            "legend entry {n:?} missing from {name}"
-        );
+        assert!(svg.contains(&escaped), "legend entry {n:?} missing");
     }
     for p in &f.panels {
         assert!(
@@ -63,23 +114,68 @@ fn check_svg(f: &Figure, name: &str) -> String {
             "axis titles missing"
         );
     }
-    let lines = f
-        .panels
-        .iter()
-        .flat_map(|p| &p.series)
-        .filter(|s| s.style == Style::Line)
-        .map(|s| s.pieces.len())
-        .sum::<usize>();
-    assert!(
-        svg.matches("<polyline").count() >= lines,
-        "{name}: fewer polylines than line pieces"
-    );
-    svg
+    let mut lines = polylines(svg);
+    let circles = elements(svg, "circle");
+    for s in f.panels.iter().flat_map(|p| &p.series) {
+        let color = hex(s.color);
+        let pieces = s.pieces.iter().filter(|p| !p.is_empty());
+        let count = |points: usize| {
+            lines
+                .iter()
+                .filter(|l| l.stroke == color && l.width == "2" && l.points == points)
+                .count()
+        };
+        match s.style {
+            Style::Line => {
+                for piece in pieces {
+                    let i = lines
+                        .iter()
+                        .position(|l| {
+                            l.stroke == color && l.width == "2" && l.points == piece.len()
+                        })
+                        .unwrap_or_else(|| {
+                            panic!("{:?}: no polyline of {} points", s.name, piece.len())
+                        });
+                    lines.remove(i);
+                }
+            }
+            Style::Dashed => {
+                let n = pieces.count();
+                assert!(count(2) >= 2 * n, "{:?}: too few dashes", s.name);
+            }
+            Style::Points => {
+                let n: usize = s.pieces.iter().map(Vec::len).sum();
+                let drawn = circles
+                    .iter()
+                    .filter(|c| attribute(c, "fill") == color)
+                    .count();
+                assert!(drawn >= n, "{:?}: {drawn} markers for {n} points", s.name);
+            }
+            Style::Segments => {
+                let n: usize = s.pieces.iter().map(|p| p.len() / 2).sum();
+                assert!(count(2) >= n, "{:?}: too few segments", s.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn a_figure_without_its_data_fails_the_drawn_data_check() {
+    let f = load_space_figure(&contact(), &cycle(), &units()).unwrap();
+    check_svg(&f);
+    // The same panels, titles and legends with every series emptied: the axes and legend samples
+    // are still drawn, but no series' data.
+    let mut empty = f.clone();
+    for s in empty.panels.iter_mut().flat_map(|p| &mut p.series) {
+        s.pieces = vec![Vec::new()];
+    }
+    let (svg, _) = render_svg(&empty).unwrap();
+    assert!(std::panic::catch_unwind(|| check_drawn(&f, &svg)).is_err());
 }
 
 #[test]
 fn load_space_holds_the_trajectory_friction_lines_and_edge_paths() {
-    let f = load_space_figure(&contact(), &cycle()).unwrap();
+    let f = load_space_figure(&contact(), &cycle(), &units()).unwrap();
     let n = names(&f);
     for want in [
         "trajectory",
@@ -107,7 +203,7 @@ fn load_space_holds_the_trajectory_friction_lines_and_edge_paths() {
         "{} vs {s1}",
         left.pieces[0][0].1
     );
-    check_svg(&f, "load.svg");
+    check_svg(&f);
 }
 
 #[test]
@@ -119,7 +215,7 @@ fn slip_map_curves_are_the_steady_analysis() {
         tensions: vec![0.0, 0.02],
         samples: 20,
     };
-    let f = slip_map_figure(&contact(), &map).unwrap();
+    let f = slip_map_figure(&contact(), &map, &units()).unwrap();
     assert_eq!(f.panels.len(), 2);
     assert_eq!(f.panels[0].title, "f = 0.3");
     assert_eq!(f.panels[0].series.len(), 4);
@@ -148,7 +244,7 @@ fn slip_map_curves_are_the_steady_analysis() {
     let panel = &f.panels[1].series;
     assert!(at(&panel[1], 0.9) > at(&panel[0], 0.9));
     assert!(at(&panel[2], 0.9) < at(&panel[0], 0.9));
-    check_svg(&f, "map.svg");
+    check_svg(&f);
 }
 
 #[test]
@@ -169,7 +265,7 @@ fn evolution_overlays_exact_asymptotic_and_marched_stick_zones() {
     .unwrap();
     let marched = MarchedCycle::last_cycle(&result, &history).unwrap();
     assert_eq!(marched.points.len(), 40);
-    let f = evolution_figure(&ev, Some(&marched));
+    let f = evolution_figure(&ev, Some(&marched), &units());
     let exact = f.panels[1]
         .series
         .iter()
@@ -192,10 +288,10 @@ fn evolution_overlays_exact_asymptotic_and_marched_stick_zones() {
         (marched_right - right_end).abs() < 2.0 * 0.9006 / 200.0,
         "{marched_right}"
     );
-    let svg = check_svg(&f, "evolution.svg");
+    let svg = check_svg(&f);
     assert!(svg.contains("stick boundary (time marching)"));
     // Without the overlay the marching series is absent.
-    assert!(!names(&evolution_figure(&ev, None))
+    assert!(!names(&evolution_figure(&ev, None, &units()))
         .iter()
         .any(|n| n.contains("marching")));
 }
@@ -223,10 +319,10 @@ fn march_figures_hold_fields_and_zones_and_png_is_valid() {
         recorder.kept.iter().map(|k| k.step).collect::<Vec<_>>(),
         vec![10, 25]
     );
-    let fields = march_fields_figure(&recorder.kept);
+    let fields = march_fields_figure(&recorder.kept, &units());
     assert_eq!(fields.panels[0].series[0].pieces[0].len(), 100);
-    check_svg(&fields, "fields.svg");
-    let zones = march_zones_figure(&result);
+    check_svg(&fields);
+    let zones = march_zones_figure(&result, &units());
     let bars = &zones.panels[0].series[1];
     assert_eq!(
         bars.pieces[0].len(),
@@ -236,22 +332,72 @@ fn march_figures_hold_fields_and_zones_and_png_is_valid() {
             .map(|s| s.stick_intervals.len())
             .sum::<usize>()
     );
-    check_svg(&zones, "zones.svg");
-    let png = out("zones.png");
+    check_svg(&zones);
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("zones.png");
     write(&zones, &png).unwrap();
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "PNG signature");
     let width = u32::from_be_bytes(bytes[16..20].try_into().unwrap());
     let height = u32::from_be_bytes(bytes[20..24].try_into().unwrap());
-    assert_eq!((width, height), (640, 520));
+    // The PNG is the SVG rendered: the same size.
+    let (_, size) = render_svg(&zones).unwrap();
+    assert_eq!((width, height), size);
+    assert_eq!(width, 640);
     assert!(bytes.len() > 10_000, "a PNG with content");
 }
 
 #[test]
+fn axis_labels_carry_the_units_given() {
+    let units = Units {
+        force_per_length: "kN/m".into(),
+        length: "m".into(),
+        stress: "kPa".into(),
+    };
+    let f = load_space_figure(&contact(), &cycle(), &units).unwrap();
+    assert_eq!(f.panels[0].x_label, "normal load P (kN/m)");
+    assert_eq!(f.panels[1].y_label, "equivalent shear S (kN/m)");
+    let fields = march_fields_figure(&[], &units);
+    assert_eq!(fields.panels[0].y_label, "traction q (kPa)");
+    assert_eq!(fields.panels[1].y_label, "slip (m)");
+    assert_eq!(fields.panels[1].x_label, "position x (m)");
+    let svg = check_svg(&f);
+    assert!(!svg.contains("N/mm"), "a default unit left in the labels");
+}
+
+#[test]
+fn tick_labels_have_the_decimals_the_spacing_needs() {
+    let f = load_space_figure(&contact(), &cycle(), &units()).unwrap();
+    let (svg, _) = render_svg(&f).unwrap();
+    let labels = texts(&svg);
+    // Loads in hundreds: integer ticks, a true minus sign, and zero without a sign.
+    for want in ["0", "200", "1000", "−600"] {
+        assert!(labels.contains(&want), "{want} not among {labels:?}");
+    }
+    for bad in ["200.0", "-0", "−0", "-0.0"] {
+        assert!(!labels.contains(&bad), "{bad} among the tick labels");
+    }
+    // The slip map's axes run from 0 to about 1: one decimal.
+    let map = SlipMap {
+        normal: 1000.0,
+        frictions: vec![0.6],
+        ratios: vec![1.0],
+        tensions: vec![0.0],
+        samples: 10,
+    };
+    let (svg, _) = render_svg(&slip_map_figure(&contact(), &map, &units()).unwrap()).unwrap();
+    let labels = texts(&svg);
+    assert!(labels.contains(&"0.5"), "no 0.5 tick among {labels:?}");
+}
+
+#[test]
 fn bad_requests_are_clear_errors() {
-    let f = load_space_figure(&contact(), &cycle()).unwrap();
-    let err = write(&f, &out("figure.jpg")).unwrap_err();
+    let f = load_space_figure(&contact(), &cycle(), &units()).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let jpg = dir.path().join("figure.jpg");
+    let err = write(&f, &jpg).unwrap_err();
     assert!(err.to_string().contains(".svg or .png"), "{err}");
+    assert!(!jpg.exists(), "no file is left for a refused format");
     let err = write(&f, std::path::Path::new("/nonexistent-dir/figure.svg")).unwrap_err();
     assert!(
         err.to_string()
