@@ -2,7 +2,6 @@
 
 mod common;
 use common::*;
-use std::path::PathBuf;
 
 fn json(args: &[&str]) -> serde_json::Value {
     let o = run(args);
@@ -106,13 +105,13 @@ fn evolve_csv_has_the_documented_columns() {
 }
 
 /// Writes a case file (with an optional profile table) into a fresh directory.
-fn case_with(name: &str, text: &str, table: Option<&str>) -> PathBuf {
+fn case_with(name: &str, text: &str, table: Option<&str>) -> ScratchFile {
     let dir = scratch(name);
     if let Some(t) = table {
         std::fs::write(dir.join("p.csv"), t).unwrap();
     }
-    let path = dir.join("case.toml");
-    std::fs::write(&path, text).unwrap();
+    let path = ScratchFile::new(dir, "case.toml");
+    std::fs::write(&*path, text).unwrap();
     path
 }
 

@@ -2,7 +2,6 @@
 
 mod common;
 use common::*;
-use std::path::PathBuf;
 
 #[test]
 fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
@@ -96,13 +95,13 @@ kind = "hertz"
 radius = 50.0
 "#;
 
-fn case_with(name: &str, history: &str, csv: Option<&str>) -> PathBuf {
+fn case_with(name: &str, history: &str, csv: Option<&str>) -> ScratchFile {
     let dir = scratch(name);
     if let Some(c) = csv {
         std::fs::write(dir.join("h.csv"), c).unwrap();
     }
-    let path = dir.join("case.toml");
-    std::fs::write(&path, format!("{BASE}{history}")).unwrap();
+    let path = ScratchFile::new(dir, "case.toml");
+    std::fs::write(&*path, format!("{BASE}{history}")).unwrap();
     path
 }
 

@@ -3,7 +3,7 @@
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BASE: &str = r#"[material]
@@ -19,9 +19,9 @@ point1 = { normal = 1000.0, shear = -250.0, bulk = -20.0 }
 point2 = { normal = 1400.0, shear = 250.0, bulk = 20.0 }
 "#;
 
-fn write_case(name: &str, text: &str) -> PathBuf {
-    let path = scratch(name).join("case.toml");
-    std::fs::write(&path, text).unwrap();
+fn write_case(name: &str, text: &str) -> ScratchFile {
+    let path = ScratchFile::new(scratch(name), "case.toml");
+    std::fs::write(&*path, text).unwrap();
     path
 }
 
@@ -289,7 +289,7 @@ fn march_fields_takes_at_most_20_steps() {
     assert_clear_error("--steps", &o, &["--steps", "21 values", "20"]);
 }
 
-fn tabulated_case(name: &str, table: &[u8], case_prefix: &[u8], eol: &str) -> PathBuf {
+fn tabulated_case(name: &str, table: &[u8], case_prefix: &[u8], eol: &str) -> ScratchFile {
     let dir = scratch(name);
     std::fs::write(dir.join("p.csv"), table).unwrap();
     let text = BASE
@@ -298,8 +298,8 @@ fn tabulated_case(name: &str, table: &[u8], case_prefix: &[u8], eol: &str) -> Pa
             "kind = \"tabulated\"\nfile = \"p.csv\"\nkinks = [0.3]",
         )
         .replace('\n', eol);
-    let path = dir.join("case.toml");
-    std::fs::write(&path, [case_prefix, text.as_bytes()].concat()).unwrap();
+    let path = ScratchFile::new(dir, "case.toml");
+    std::fs::write(&*path, [case_prefix, text.as_bytes()].concat()).unwrap();
     path
 }
 

@@ -34,10 +34,45 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-/// A fresh scratch directory for one test.
-pub fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("halfplane-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
-    dir
+/// A fresh scratch directory for one test, removed when dropped (so a test run leaves nothing
+/// in the temporary directory). Derefs to its path.
+pub struct Scratch(tempfile::TempDir);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        self.0.path()
+    }
+}
+
+/// A fresh scratch directory for one test; `name` prefixes it, for debugging.
+pub fn scratch(name: &str) -> Scratch {
+    Scratch(
+        tempfile::Builder::new()
+            .prefix(&format!("halfplane-cli-{name}-"))
+            .tempdir()
+            .expect("scratch directory"),
+    )
+}
+
+/// A file in its own scratch directory, which lives as long as this does. Derefs to the file's
+/// path.
+pub struct ScratchFile {
+    _dir: Scratch,
+    path: PathBuf,
+}
+
+impl ScratchFile {
+    /// `name` inside `dir`.
+    pub fn new(dir: Scratch, name: &str) -> Self {
+        let path = dir.join(name);
+        Self { _dir: dir, path }
+    }
+}
+
+impl std::ops::Deref for ScratchFile {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.path
+    }
 }
