@@ -144,6 +144,14 @@ pub struct Marcher {
     traction: Vec<f64>,
     slip: Vec<f64>,
     slip_increment: Vec<f64>,
+    /// Sum of |slip| over the sub-steps of the current increment (for the stick/slip labels).
+    slip_travel: Vec<f64>,
+    /// Slip of the current sub-step.
+    sub_slip: Vec<f64>,
+    /// Pressure at the start of the current sub-step.
+    pressure_start: Vec<f64>,
+    /// Contact half-width reached (0 unloaded).
+    half_width: f64,
     cells: Vec<Cell>,
     // Work buffers, reused by every increment.
     known: Vec<f64>,
@@ -169,9 +177,17 @@ impl Marcher {
         }
         crate::error::positive("grid half-span", half_span)?;
         let width = 2.0 * half_span / n as f64;
-        let x: Vec<f64> = (0..n)
+        // Exactly symmetric (mirrored, not recomputed), so that both edges cross their cell
+        // centres at the same load, where a sub-step puts the half-width at the centre exactly.
+        let mut x: Vec<f64> = (0..n)
             .map(|i| -half_span + (i as f64 + 0.5) * width)
             .collect();
+        for i in 0..n / 2 {
+            x[n - 1 - i] = -x[i];
+        }
+        if n % 2 == 1 {
+            x[n / 2] = 0.0;
+        }
         let scale = 4.0 * half_span;
         let antiderivative = |t: f64| {
             if t == 0.0 {
@@ -216,6 +232,10 @@ impl Marcher {
             traction: zeros.clone(),
             slip: zeros.clone(),
             slip_increment: zeros.clone(),
+            slip_travel: zeros.clone(),
+            sub_slip: zeros.clone(),
+            pressure_start: zeros.clone(),
+            half_width: 0.0,
             cells: vec![Cell::Out; n],
             known: zeros.clone(),
             dq: zeros.clone(),
@@ -243,7 +263,19 @@ impl Marcher {
         self.width
     }
 
-    /// Advances to `load`.
+    /// Advances to `load`, the load moving linearly from the previous one (the in-phase path of
+    /// an increment).
+    ///
+    /// The increment is split internally wherever the contact edge crosses a cell centre (both
+    /// edges cross together on the symmetric grid), so that a cell enters contact, stuck with
+    /// zero traction and zero pressure, exactly when the edge reaches it, and leaves contact,
+    /// releasing its traction, exactly when the edge passes it going back. Constraining a new
+    /// cell from the start of the increment instead made its traction rise like
+    /// `c dP / (pi sqrt(2 a s))` against a pressure `K_N sqrt(s)` (s from the edge), so cells
+    /// just inside an advancing edge slipped forward on every rising half (a ratchet that
+    /// dissipated even in full stick, with an energy growing like the squared edge advance per
+    /// increment, not with the cell size). The sub-steps are reported as one increment, with
+    /// the energy their sum.
     pub fn step(&mut self, load: LoadPoint) -> Result<StepReport> {
         let step = self.step + 1;
         let name = format!("history row {step}");
@@ -265,9 +297,79 @@ impl Marcher {
                 valid: "a load whose contact fits the grid (size the grid from the whole history)",
             });
         }
+        // Sub-steps: the load fractions at which a(P) passes a cell centre. The half-width at a
+        // crossing is the centre itself, exactly, so the test `|x| < a` below is exact there.
         let n = self.x.len();
+        let start = self.load;
+        let (lo, hi) = (self.half_width.min(a), self.half_width.max(a));
+        let mut crossings: Vec<(f64, f64)> = Vec::new();
+        for &r in &self.x[n / 2..] {
+            if r > lo && r < hi {
+                let t = (self.contact.load(r)? - start.normal) / (load.normal - start.normal);
+                if t > 0.0 && t < 1.0 {
+                    crossings.push((t, r));
+                }
+            }
+        }
+        crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
+        crossings.push((1.0, a));
+        self.slip_increment.fill(0.0);
+        self.slip_travel.fill(0.0);
+        let (mut energy_increment, mut passes) = (0.0, 0);
+        for (t, a_t) in crossings {
+            let target = if t == 1.0 { load } else { start.lerp(&load, t) };
+            let (energy, used) = self.advance(target, a_t, step)?;
+            energy_increment += energy;
+            passes += used;
+        }
+        self.energy += energy_increment;
+        self.step = step;
+        // Kinematic classification: contact cells that did not slip this increment.
+        let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal;
+        let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
+        let mut open: Option<usize> = None;
+        for i in 0..=n {
+            let sticks =
+                i < n && self.cells[i] != Cell::Out && self.slip_travel[i] <= tolerance;
+            match (sticks, open) {
+                (true, None) => open = Some(i),
+                (false, Some(start)) => {
+                    let left = (self.x[start] - 0.5 * self.width).max(-a);
+                    let right = (self.x[i - 1] + 0.5 * self.width).min(a);
+                    stick_intervals.push([left, right]);
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        Ok(StepReport {
+            step,
+            load,
+            half_width: a,
+            stick_intervals,
+            energy_increment,
+            energy: self.energy,
+            passes,
+        })
+    }
+
+    /// One sub-step: from the current state to `load`, whose contact half-width is `a` (cells
+    /// with `|x| < a` are in contact during the whole sub-step). Returns the energy dissipated
+    /// and the active-set passes used.
+    ///
+    /// The dissipation is the Coulomb rate `f p |ds/dt|` integrated by the trapezoidal rule,
+    /// `f (p_start + p_end)/2 |s|` per slipping cell (Johnson, *Contact Mechanics*, section 7.2,
+    /// for the frictional work `q ds` with `|q| = f p` while slipping). It is never negative.
+    /// The end-of-step traction alone (`f p_end |s|`) is the rectangle rule, first order in the
+    /// time step.
+    fn advance(&mut self, load: LoadPoint, a: f64, step: usize) -> Result<(f64, usize)> {
+        let n = self.x.len();
+        let f = self.friction;
+        self.pressure_start.copy_from_slice(&self.pressure);
         for i in 0..n {
-            let inside = self.x[i].abs() < a;
+            // A cell stays in contact until the receding edge reaches its centre (its pressure,
+            // and so its traction, is zero then) and joins when the advancing edge does.
+            let inside = self.x[i].abs() < a.max(self.half_width);
             self.pressure[i] = if inside {
                 self.contact.pressure(a, self.x[i])?
             } else {
@@ -281,10 +383,14 @@ impl Marcher {
         }
         let d_sigma = load.bulk - self.load.bulk;
         let c_disp = self.compliance / PI;
-        let tolerance = self.options.slip_tolerance * self.compliance * f * load.normal;
+        // A slipping cell sticks again only when its slip would reverse by more than rounding
+        // (1e-13 of A f P, the displacement scale; PCG stops at 1e-13 of its residual). This
+        // is a property of the arithmetic, not the user's slip-labelling threshold, which must
+        // not change the solution.
+        let reversal = 1e-13 * self.compliance * f * load.normal;
         // A stick cell starts to slip only when its traction exceeds the limit by more than
-        // rounding. Cells can sit exactly at the limit without slipping (THEORY.md); with a
-        // relative test, rounding pushed such cells over one at a time (190 passes where 5 do).
+        // rounding. Cells can sit exactly at the limit without slipping; with a relative test,
+        // rounding pushed such cells over one at a time (190 passes where 5 do).
         let traction_tolerance = 1e-9 * f * self.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
         let q_old_sum: f64 = self.traction.iter().sum();
         let mut passes = 0;
@@ -336,18 +442,23 @@ impl Marcher {
             for i in 0..n {
                 let s = -c_disp * (self.work[i] + 0.25 * PI * d_sigma * self.x[i] + c);
                 match self.cells[i] {
-                    Cell::Out => self.slip_increment[i] = 0.0,
+                    Cell::Out => self.sub_slip[i] = 0.0,
                     Cell::Stick => {
-                        self.slip_increment[i] = 0.0;
+                        self.sub_slip[i] = 0.0;
                         let q = self.traction[i] + self.dq[i];
                         if q.abs() > f * self.pressure[i] + traction_tolerance {
                             self.cells[i] = Cell::Slip(q.signum());
                             changed = true;
                         }
                     }
+                    Cell::Slip(_) if self.pressure[i] == 0.0 => {
+                        // Leaving contact: its traction goes to zero whichever way it slips.
+                        self.sub_slip[i] = s;
+                        self.cells[i] = Cell::Slip(if s < 0.0 { -1.0 } else { 1.0 });
+                    }
                     Cell::Slip(sign) => {
-                        self.slip_increment[i] = s;
-                        if s * sign < -tolerance {
+                        self.sub_slip[i] = s;
+                        if s * sign < -reversal {
                             self.cells[i] = Cell::Stick;
                             changed = true;
                         }
@@ -358,44 +469,30 @@ impl Marcher {
                 break;
             }
         }
-        let mut energy_increment = 0.0;
+        let mut energy = 0.0;
         for i in 0..n {
             self.traction[i] += self.dq[i];
             if self.cells[i] == Cell::Out {
                 self.traction[i] = 0.0;
             }
-            self.slip[i] += self.slip_increment[i];
-            energy_increment += self.traction[i] * self.slip_increment[i] * self.width;
-        }
-        self.energy += energy_increment;
-        self.step = step;
-        self.load = load;
-        // Kinematic classification: contact cells that did not slip this increment.
-        let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
-        let mut open: Option<usize> = None;
-        for i in 0..=n {
-            let sticks =
-                i < n && self.cells[i] != Cell::Out && self.slip_increment[i].abs() <= tolerance;
-            match (sticks, open) {
-                (true, None) => open = Some(i),
-                (false, Some(start)) => {
-                    let left = (self.x[start] - 0.5 * self.width).max(-a);
-                    let right = (self.x[i - 1] + 0.5 * self.width).min(a);
-                    stick_intervals.push([left, right]);
-                    open = None;
-                }
-                _ => {}
+            let s = self.sub_slip[i];
+            self.slip[i] += s;
+            self.slip_increment[i] += s;
+            self.slip_travel[i] += s.abs();
+            if s != 0.0 {
+                let p = mean_pressure(
+                    self.half_width,
+                    a,
+                    self.x[i],
+                    self.pressure_start[i],
+                    self.pressure[i],
+                );
+                energy += f * p * s.abs() * self.width;
             }
         }
-        Ok(StepReport {
-            step,
-            load,
-            half_width: a,
-            stick_intervals,
-            energy_increment,
-            energy: self.energy,
-            passes,
-        })
+        self.load = load;
+        self.half_width = a;
+        Ok((energy, passes))
     }
 
     /// Solves `G_SS z = b` on the stick cells S, into `u` (b = rhs) or `v` (b = 1).
@@ -481,6 +578,32 @@ impl Marcher {
             iterations: 500,
         })
     }
+}
+
+/// Mean pressure at `x` over a sub-step in which the half-width moves from `a0` to `a1`, given
+/// the pressures `p0`, `p1` at its ends (compressive positive).
+///
+/// Every profile's pressure has the form `p = sqrt(u) psi` with `u = a^2 - x^2` and `psi`
+/// smooth (THEORY's pressure formula, e.g. Johnson, *Contact Mechanics*, eq. 5.33: the factor
+/// `sqrt(a^2 - x^2)` multiplies a regular integral). Near an edge `sqrt(u)` is not smooth in
+/// time, and the trapezoidal rule on `p` then has an error `O(dt^1.5)` summed over a cell's
+/// steps. This is product integration (Atkinson, *An Introduction to Numerical Analysis*, 2nd
+/// ed., section 5.6): `sqrt(u)` is integrated exactly with `u` linear over the sub-step (exact for
+/// Hertz, where `a^2` is linear in P),
+/// `mean sqrt(u) = (2/3)(u0 + sqrt(u0 u1) + u1)/(sqrt(u0) + sqrt(u1))`, and `psi` by the
+/// trapezoidal rule; at an end where `u = 0` (the cell entered there) `psi` is taken from the
+/// other end.
+fn mean_pressure(a0: f64, a1: f64, x: f64, p0: f64, p1: f64) -> f64 {
+    let u0 = (a0 * a0 - x * x).max(0.0);
+    let u1 = (a1 * a1 - x * x).max(0.0);
+    let (r0, r1) = (u0.sqrt(), u1.sqrt());
+    if r0 + r1 == 0.0 {
+        return 0.0;
+    }
+    let psi0 = if r0 > 0.0 { p0 / r0 } else { p1 / r1 };
+    let psi1 = if r1 > 0.0 { p1 / r1 } else { psi0 };
+    let root_mean = (2.0 / 3.0) * (u0 + r0 * r1 + u1) / (r0 + r1);
+    root_mean * 0.5 * (psi0 + psi1)
 }
 
 enum Rhs {
