@@ -193,16 +193,10 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
     let mut solver = MarchOptions::default();
     if let Some(raw_solver) = raw.solver {
         if let Some(cells) = raw_solver.cells {
-            if cells < 8 {
-                bail!("invalid solver.cells = {cells}: must be a whole number >= 8");
-            }
-            solver.cells = cells;
+            solver = solver.with_cells(cells)?;
         }
         if let Some(t) = raw_solver.slip_tolerance {
-            if !(t.is_finite() && t > 0.0 && t < 1.0) {
-                bail!("invalid solver.slip_tolerance = {t}: must be a number with 0 < t < 1 (a fraction of A f P)");
-            }
-            solver.slip_tolerance = t;
+            solver = solver.with_slip_tolerance(t)?;
         }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.

@@ -172,7 +172,7 @@ fn run(cli: Cli) -> Result<()> {
             let history = case.history()?;
             let mut options = case.solver;
             if let Some(n) = cells {
-                options.cells = n;
+                options = options.with_cells(n)?;
             }
             if let Some(dir) = &fields {
                 std::fs::create_dir_all(dir).map_err(|e| {
@@ -213,7 +213,7 @@ fn run(cli: Cli) -> Result<()> {
             } else {
                 print!(
                     "{}",
-                    report::march_table(&result, &history, options.shakedown_tolerance)
+                    report::march_table(&result, &history, options.shakedown_tolerance())
                 );
             }
         }
@@ -231,12 +231,9 @@ fn run(cli: Cli) -> Result<()> {
             cells,
         } => {
             let case = case::load(&case)?;
-            let march_options = |case: &case::Case| {
-                let mut o = case.solver;
-                if let Some(n) = cells {
-                    o.cells = n;
-                }
-                o
+            let march_options = |case: &case::Case| match cells {
+                Some(n) => case.solver.with_cells(n),
+                None => Ok(case.solver),
             };
             let fig = match figure {
                 FigureKind::LoadSpace => {
@@ -267,7 +264,7 @@ fn run(cli: Cli) -> Result<()> {
                         let result = march::march(
                             &case.contact,
                             &history,
-                            &march_options(&case),
+                            &march_options(&case)?,
                             |_, _| {},
                         )?;
                         Some(halfplane_plot::MarchedCycle::last_cycle(&result, &history)?)
@@ -303,7 +300,7 @@ fn run(cli: Cli) -> Result<()> {
                     let result = march::march(
                         &case.contact,
                         &history,
-                        &march_options(&case),
+                        &march_options(&case)?,
                         |r, fields| recorder.observe(r.step, fields, f),
                     )?;
                     match figure {

@@ -12,10 +12,7 @@ fn run(c: &Contact, rows: &[[f64; 3]], cells: usize) -> MarchResult {
     march(
         c,
         &History::from_rows(rows).unwrap(),
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |_, _| {},
     )
     .unwrap()
@@ -68,10 +65,7 @@ fn traction_at(
     let r = march(
         c,
         &History::from_rows(rows).unwrap(),
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |s, f| {
             if s.step == step {
                 q = f.traction.to_vec();
@@ -177,10 +171,7 @@ fn paper_case(profile: Profile, cells: usize) {
     let r = march(
         &c,
         &history,
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |_, _| {},
     )
     .unwrap();
@@ -242,10 +233,7 @@ fn last_cycle(
     let r = march(
         c,
         &history,
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |_, _| {},
     )
     .unwrap();
@@ -332,11 +320,11 @@ fn slip_tolerance_changes_the_labels_not_the_solution() {
         let r = march(
             &c,
             &history,
-            &MarchOptions {
-                cells: 300,
-                slip_tolerance: tolerance,
-                ..Default::default()
-            },
+            &MarchOptions::default()
+                .with_cells(300)
+                .unwrap()
+                .with_slip_tolerance(tolerance)
+                .unwrap(),
             |_, f| traction.extend_from_slice(f.traction),
         )
         .unwrap();
@@ -387,10 +375,7 @@ fn stick_zone_at_both_ends_matches_steady_at_any_step_count() {
             let r = march(
                 &c,
                 &history,
-                &MarchOptions {
-                    cells: 400,
-                    ..Default::default()
-                },
+                &MarchOptions::default().with_cells(400).unwrap(),
                 |_, _| {},
             )
             .unwrap();
@@ -441,17 +426,84 @@ fn bad_histories_are_errors_naming_the_row() {
     let err = History::from_rows(&[[1000.0, f64::INFINITY, 0.0]]).unwrap_err();
     assert!(err.to_string().contains("history row 1.shear"), "{err}");
     assert!(History::from_rows(&[]).is_err());
-    let err = march(
+    // The limit, the default grid and the history stay usable after a rejected setting.
+    assert!(march(
         &c,
         &History::from_rows(&[[1000.0, 0.0, 0.0]]).unwrap(),
-        &MarchOptions {
-            cells: 0,
-            ..Default::default()
-        },
+        &MarchOptions::default(),
         |_, _| {},
     )
-    .unwrap_err();
-    assert!(err.to_string().contains("solver.cells"), "{err}");
+    .is_ok());
+}
+
+#[test]
+fn solver_options_are_valid_by_construction() {
+    // Each rejected setting is a typed error naming the case-file field, the value and the
+    // valid range (never a panic, never a silently clamped value).
+    use halfplane::march::LinearSolver;
+    let o = MarchOptions::default();
+    for (err, field, range) in [
+        (o.with_cells(0).unwrap_err(), "solver.cells", ">= 8"),
+        (o.with_cells(7).unwrap_err(), "solver.cells", ">= 8"),
+        (
+            o.with_cells(MarchOptions::MAX_CELLS + 1).unwrap_err(),
+            "solver.cells",
+            "<= 1000000",
+        ),
+        (
+            o.with_cells(20_000)
+                .unwrap()
+                .with_solver(LinearSolver::Dense)
+                .unwrap_err(),
+            "solver.cells",
+            "<= 10000 with the dense solver",
+        ),
+        (
+            o.with_solver(LinearSolver::Dense)
+                .unwrap()
+                .with_cells(20_000)
+                .unwrap_err(),
+            "solver.cells",
+            "<= 10000 with the dense solver",
+        ),
+        (
+            o.with_max_passes(0).unwrap_err(),
+            "solver.max_passes",
+            ">= 1",
+        ),
+        (
+            o.with_slip_tolerance(0.0).unwrap_err(),
+            "solver.slip_tolerance",
+            "0 < t < 1",
+        ),
+        (
+            o.with_slip_tolerance(f64::NAN).unwrap_err(),
+            "solver.slip_tolerance",
+            "0 < t < 1",
+        ),
+        (
+            o.with_shakedown_tolerance(1.5).unwrap_err(),
+            "solver.shakedown_tolerance",
+            "0 < t < 1",
+        ),
+    ] {
+        let text = err.to_string();
+        assert!(
+            matches!(err, Error::InvalidInput { .. })
+                && text.contains(field)
+                && text.contains(range),
+            "{text}"
+        );
+    }
+    let o = o
+        .with_cells(MarchOptions::MAX_CELLS)
+        .unwrap()
+        .with_slip_tolerance(1e-6)
+        .unwrap();
+    assert_eq!(
+        (o.cells(), o.slip_tolerance()),
+        (MarchOptions::MAX_CELLS, 1e-6)
+    );
 }
 
 #[test]
@@ -480,21 +532,18 @@ fn toeplitz_and_dense_solvers_agree() {
     let fast = march(
         &c,
         &history,
-        &MarchOptions {
-            cells: 160,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(160).unwrap(),
         |_, _| {},
     )
     .unwrap();
     let dense = march(
         &c,
         &history,
-        &MarchOptions {
-            cells: 160,
-            solver: LinearSolver::Dense,
-            ..Default::default()
-        },
+        &MarchOptions::default()
+            .with_cells(160)
+            .unwrap()
+            .with_solver(LinearSolver::Dense)
+            .unwrap(),
         |_, _| {},
     )
     .unwrap();
@@ -532,10 +581,7 @@ fn one_edge_slip_rows_of_evolve_agree_with_marching_at_the_slipping_edge() {
     let r = march(
         &c,
         &history,
-        &MarchOptions {
-            cells: 1000,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(1000).unwrap(),
         |_, _| {},
     )
     .unwrap();

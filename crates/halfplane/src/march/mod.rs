@@ -33,6 +33,7 @@ use toeplitz::Toeplitz;
 
 /// How the stick cells' linear system is solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum LinearSolver {
     /// Exact Toeplitz inverse per stick run (Gohberg-Semencul, FFT) and FFT products:
     /// O(N log N) per pass. The default.
@@ -43,22 +44,24 @@ pub enum LinearSolver {
     Dense,
 }
 
-/// Solver parameters.
+/// Solver parameters, valid by construction: start from [`MarchOptions::default`] and change
+/// what you need with the `with_*` methods, each of which checks its value and returns a typed
+/// error naming the case-file field, the value and the valid range.
+///
+/// ```
+/// use halfplane::march::{LinearSolver, MarchOptions};
+/// let options = MarchOptions::default().with_cells(1000)?.with_solver(LinearSolver::Toeplitz)?;
+/// assert_eq!(options.cells(), 1000);
+/// assert!(MarchOptions::default().with_cells(3).is_err());
+/// # Ok::<(), halfplane::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MarchOptions {
-    /// Linear solver; default [`LinearSolver::Toeplitz`].
-    pub solver: LinearSolver,
-    /// Cells across the largest contact of the history; default 400 (stick boundaries within
-    /// 0.3% of the contact width, see `docs/convergence.md`).
-    pub cells: usize,
-    /// Active-set passes allowed per increment; default 200 (a few are typical).
-    pub max_passes: usize,
-    /// A cell counts as slipping when its slip increment exceeds this fraction of `A f P`;
-    /// default 1e-10 (rounding in the displacement is ~1e-15 of it). Stick cells may exceed the
-    /// friction limit by 1e-9 of `f p_max` before they are made to slip.
-    pub slip_tolerance: f64,
-    /// Cycles repeat when their slip ranges and energies agree to this fraction; default 1e-3.
-    pub shakedown_tolerance: f64,
+    solver: LinearSolver,
+    cells: usize,
+    max_passes: usize,
+    slip_tolerance: f64,
+    shakedown_tolerance: f64,
 }
 
 impl Default for MarchOptions {
@@ -70,6 +73,117 @@ impl Default for MarchOptions {
             slip_tolerance: 1e-10,
             shakedown_tolerance: 1e-3,
         }
+    }
+}
+
+impl MarchOptions {
+    /// Fewest cells: below this a contact is resolved by too few cells for a stick zone.
+    pub const MIN_CELLS: usize = 8;
+    /// Most cells with the Toeplitz solver. The marcher holds about 1.5 kB per cell (18 vectors
+    /// of N values and up to 12 cached Toeplitz generators, each with two spectra of up to 4N
+    /// points), so the limit is about 1.5 GB.
+    pub const MAX_CELLS: usize = 1_000_000;
+    /// Most cells with [`LinearSolver::Dense`]: its N x N kernel and the Cholesky factor of
+    /// the stick block take up to 16 N^2 bytes, 1.6 GB at the limit (and a pass costs O(N^3)).
+    pub const MAX_DENSE_CELLS: usize = 10_000;
+
+    /// Sets the number of cells across the largest contact of the history (default 400: stick
+    /// boundaries within 0.3% of the contact width, see `docs/convergence.md`).
+    pub fn with_cells(mut self, cells: usize) -> Result<Self> {
+        if !(Self::MIN_CELLS..=Self::MAX_CELLS).contains(&cells) {
+            return Err(Error::InvalidInput {
+                field: "solver.cells".into(),
+                value: cells as f64,
+                valid:
+                    "a whole number >= 8 and <= 1000000 (the solver needs about 1.5 kB per cell)",
+            });
+        }
+        self.cells = cells;
+        self.check_dense()
+    }
+
+    /// Sets the linear solver (default [`LinearSolver::Toeplitz`]).
+    pub fn with_solver(mut self, solver: LinearSolver) -> Result<Self> {
+        self.solver = solver;
+        self.check_dense()
+    }
+
+    fn check_dense(self) -> Result<Self> {
+        if self.solver == LinearSolver::Dense && self.cells > Self::MAX_DENSE_CELLS {
+            return Err(Error::InvalidInput {
+                field: "solver.cells".into(),
+                value: self.cells as f64,
+                valid: "<= 10000 with the dense solver (its N x N matrices take 16 N^2 bytes)",
+            });
+        }
+        Ok(self)
+    }
+
+    /// Sets the active-set passes allowed per sub-step (default 200; a few are typical).
+    pub fn with_max_passes(mut self, passes: usize) -> Result<Self> {
+        if passes == 0 {
+            return Err(Error::InvalidInput {
+                field: "solver.max_passes".into(),
+                value: 0.0,
+                valid: "a whole number >= 1",
+            });
+        }
+        self.max_passes = passes;
+        Ok(self)
+    }
+
+    /// Sets the slip-labelling threshold, a fraction of `A f P` (default 1e-10): a cell is
+    /// reported as slipping in an increment when it slides by more than this. It changes only
+    /// the reported stick intervals, never the solution.
+    pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self> {
+        if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+            return Err(Error::InvalidInput {
+                field: "solver.slip_tolerance".into(),
+                value: tolerance,
+                valid: "a number with 0 < t < 1 (a fraction of A f P)",
+            });
+        }
+        self.slip_tolerance = tolerance;
+        Ok(self)
+    }
+
+    /// Sets the shakedown test: cycles repeat when their slip ranges and energies agree to this
+    /// fraction (default 1e-3).
+    pub fn with_shakedown_tolerance(mut self, tolerance: f64) -> Result<Self> {
+        if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+            return Err(Error::InvalidInput {
+                field: "solver.shakedown_tolerance".into(),
+                value: tolerance,
+                valid: "a number with 0 < t < 1 (a relative difference)",
+            });
+        }
+        self.shakedown_tolerance = tolerance;
+        Ok(self)
+    }
+
+    /// The linear solver.
+    pub fn solver(&self) -> LinearSolver {
+        self.solver
+    }
+
+    /// Cells across the largest contact of the history.
+    pub fn cells(&self) -> usize {
+        self.cells
+    }
+
+    /// Active-set passes allowed per sub-step.
+    pub fn max_passes(&self) -> usize {
+        self.max_passes
+    }
+
+    /// The slip-labelling threshold, a fraction of `A f P`.
+    pub fn slip_tolerance(&self) -> f64 {
+        self.slip_tolerance
+    }
+
+    /// The relative tolerance of the shakedown test.
+    pub fn shakedown_tolerance(&self) -> f64 {
+        self.shakedown_tolerance
     }
 }
 
@@ -168,13 +282,6 @@ impl Marcher {
     /// contact the history will reach. Starts unloaded.
     pub fn new(contact: &Contact, half_span: f64, options: &MarchOptions) -> Result<Self> {
         let n = options.cells;
-        if n < 8 {
-            return Err(Error::InvalidInput {
-                field: "solver.cells".into(),
-                value: n as f64,
-                valid: "a whole number >= 8",
-            });
-        }
         crate::error::positive("grid half-span", half_span)?;
         let width = 2.0 * half_span / n as f64;
         // Exactly symmetric (mirrored, not recomputed), so that both edges cross their cell
@@ -329,8 +436,7 @@ impl Marcher {
         let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
         let mut open: Option<usize> = None;
         for i in 0..=n {
-            let sticks =
-                i < n && self.cells[i] != Cell::Out && self.slip_travel[i] <= tolerance;
+            let sticks = i < n && self.cells[i] != Cell::Out && self.slip_travel[i] <= tolerance;
             match (sticks, open) {
                 (true, None) => open = Some(i),
                 (false, Some(start)) => {
@@ -647,11 +753,8 @@ fn dense_stick_solve(
                 sum -= l[i * n + k] * l[j * n + k];
             }
             if i == j {
-                if sum <= 0.0 {
-                    return Err(Error::ActiveSet {
-                        step,
-                        iterations: 0,
-                    });
+                if sum <= 0.0 || sum.is_nan() {
+                    return Err(Error::NonPositivePivot { step, index: s[i] });
                 }
                 l[i * n + i] = sum.sqrt();
             } else {
@@ -820,10 +923,7 @@ mod tests {
         let mut m = Marcher::new(
             &contact,
             1.0,
-            &MarchOptions {
-                cells: 64,
-                ..Default::default()
-            },
+            &MarchOptions::default().with_cells(64).unwrap(),
         )
         .unwrap();
         let stick: Vec<usize> = (5..20).chain(31..52).collect();
@@ -873,5 +973,18 @@ mod tests {
             .iter()
             .enumerate()
             .all(|(i, v)| stick.contains(&i) || *v == 0.0));
+    }
+
+    #[test]
+    fn a_failed_cholesky_pivot_is_its_own_error() {
+        // The kernel block is positive definite in exact arithmetic; a matrix that is not must be
+        // reported as a non-positive pivot at the cell where it fails, not as an active-set
+        // failure. [[1, 2], [2, 1]] fails at its second pivot (1 - 4 < 0).
+        let g = [1.0, 2.0, 2.0, 1.0];
+        let cells = [Cell::Stick, Cell::Stick];
+        let mut z = [0.0; 2];
+        let err = dense_stick_solve(&g, &cells, &[1.0, 1.0], &mut z, 7).unwrap_err();
+        assert_eq!(err, Error::NonPositivePivot { step: 7, index: 1 });
+        assert!(err.to_string().contains("step 7"), "{err}");
     }
 }
