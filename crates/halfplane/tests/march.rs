@@ -380,6 +380,16 @@ fn stick_zone_at_both_ends_matches_steady_at_any_step_count() {
             )
             .unwrap();
             let w = r.x[1] - r.x[0];
+            // Stick is what does not move: inside the steady zone (less a cell at each end)
+            // the last cycle's slip range is exactly zero, not a creep of rounding size.
+            let last = r.cycles.last().unwrap();
+            for (x, range) in r.x.iter().zip(&last.slip_range) {
+                assert!(
+                    *x <= exact.left + w || *x >= exact.right - w || *range == 0.0,
+                    "{p1:?} -> {p2:?}, {steps} steps per half: the permanent stick zone creeps \
+                     {range:e} mm per cycle at x = {x}"
+                );
+            }
             let n = r.steps.len();
             for (end, k) in [("point 2", n - steps - 1), ("point 1", n - 1)] {
                 let zones = &r.steps[k].stick_intervals;

@@ -274,6 +274,8 @@ pub struct Marcher {
     rhs: Vec<f64>,
     u: Vec<f64>,
     v: Vec<f64>,
+    /// The stick set `v` was solved for (empty: none).
+    v_mask: Vec<bool>,
     pcg: [Vec<f64>; 4],
 }
 
@@ -350,6 +352,7 @@ impl Marcher {
             rhs: zeros.clone(),
             u: zeros.clone(),
             v: zeros.clone(),
+            v_mask: Vec::new(),
             pcg: [zeros.clone(), zeros.clone(), zeros.clone(), zeros],
         })
     }
@@ -488,6 +491,14 @@ impl Marcher {
             }
         }
         let d_sigma = load.bulk - self.load.bulk;
+        if load.shear == 0.0 && d_sigma == 0.0 && self.traction.iter().all(|q| *q == 0.0) {
+            // Pressing alone (the first leg of a normal-first ramp): zero traction sticks and
+            // carries no shear, which is the solution; nothing slips.
+            self.sub_slip.fill(0.0);
+            self.load = load;
+            self.half_width = a;
+            return Ok((0.0, 0));
+        }
         let c_disp = self.compliance / PI;
         // A slipping cell sticks again only when its slip would reverse by more than rounding
         // (1e-13 of A f P, the displacement scale; PCG stops at 1e-13 of its residual). This
@@ -603,6 +614,19 @@ impl Marcher {
 
     /// Solves `G_SS z = b` on the stick cells S, into `u` (b = rhs) or `v` (b = 1).
     fn solve_stick(&mut self, which: &Rhs, step: usize) -> Result<()> {
+        if matches!(which, Rhs::Ones) {
+            // v depends only on the stick set, which most passes and sub-steps keep.
+            let same = self.v_mask.len() == self.cells.len()
+                && self
+                    .v_mask
+                    .iter()
+                    .zip(&self.cells)
+                    .all(|(m, c)| *m == (*c == Cell::Stick));
+            if same {
+                return Ok(());
+            }
+            self.v_mask.clear();
+        }
         let runs = stick_runs(&self.cells);
         let mut out = std::mem::take(match which {
             Rhs::Vector => &mut self.u,
@@ -628,7 +652,13 @@ impl Marcher {
         };
         match which {
             Rhs::Vector => self.u = out,
-            Rhs::Ones => self.v = out,
+            Rhs::Ones => {
+                self.v = out;
+                if result.is_ok() {
+                    self.v_mask
+                        .extend(self.cells.iter().map(|c| *c == Cell::Stick));
+                }
+            }
         }
         result
     }
