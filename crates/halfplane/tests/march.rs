@@ -447,6 +447,23 @@ fn bad_histories_are_errors_naming_the_row() {
 }
 
 #[test]
+fn a_contact_narrower_than_a_cell_is_solved_not_a_panic() {
+    // At P = 1 N/mm the contact (a = 0.024 mm) holds no cell centre of an 8-cell grid sized for
+    // P = 1000 (cells 0.19 mm wide): there is no stick cell at all, yet shear is applied. The
+    // first increment then carries nothing and the second is an ordinary partial-slip step.
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let r = march(
+        &c,
+        &History::from_rows(&[[1.0, 0.1, 0.0], [1000.0, 100.0, 0.0]]).unwrap(),
+        &MarchOptions::default().with_cells(8).unwrap(),
+        |_, _| {},
+    )
+    .unwrap();
+    assert!(r.steps[0].stick_intervals.is_empty() && r.steps[0].energy_increment == 0.0);
+    assert!(r.steps[1].energy_increment >= 0.0);
+}
+
+#[test]
 fn solver_options_are_valid_by_construction() {
     // Each rejected setting is a typed error naming the case-file field, the value and the
     // valid range (never a panic, never a silently clamped value).

@@ -703,10 +703,10 @@ impl Marcher {
         });
         if !same {
             self.schur = None;
-            let &(s0, e0) = runs
-                .iter()
-                .max_by_key(|(s, e)| e - s)
-                .expect("two or more runs");
+            // No stick cell at all (no cell centre inside the contact yet): nothing to eliminate.
+            let Some(&(s0, e0)) = runs.iter().max_by_key(|(s, e)| e - s) else {
+                return false;
+            };
             let extra: Vec<usize> = runs
                 .iter()
                 .filter(|r| r.0 != s0)
@@ -760,7 +760,9 @@ impl Marcher {
                 l,
             });
         }
-        let cache = self.schur.as_ref().expect("built above");
+        let Some(cache) = self.schur.as_ref() else {
+            return false;
+        };
         let (s0, e0, k) = (cache.start, cache.end, cache.extra.len());
         let nb = e0 - s0;
         let mut y = vec![0.0; nb];
@@ -786,8 +788,8 @@ impl Marcher {
         }
         for (j, &e) in cache.extra.iter().enumerate() {
             z[e] = r[j];
-            for i in 0..nb {
-                y[i] -= cache.w[j * nb + i] * r[j];
+            for (yi, wi) in y.iter_mut().zip(&cache.w[j * nb..(j + 1) * nb]) {
+                *yi -= wi * r[j];
             }
         }
         z[s0..e0].copy_from_slice(&y);
