@@ -9,11 +9,9 @@ use serde::{Deserialize, Deserializer};
 use std::io::BufRead;
 use std::path::Path;
 
-/// The most cells `solver.cells` and `--cells` take. The solver holds about 1.8 kB per cell
-/// (O(N) vectors and up to 12 cached Toeplitz generators with their spectra: 14 MB at 8000 cells,
-/// BENCHMARKS.md), so 100,000 cells take about 180 MB; and 300 increments take about 2.4 s at
-/// 8000 cells, growing like N^1.5, so about 2 minutes at 100,000.
-pub const MAX_CELLS: usize = 100_000;
+/// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
+const MIN_CELLS: usize = MarchOptions::MIN_CELLS;
+const MAX_CELLS: usize = MarchOptions::MAX_CELLS;
 
 /// A count as the case file gives it. Any TOML value is taken here and checked when resolved,
 /// so that the error names the field, the value and the valid range (serde's own message would
@@ -186,7 +184,13 @@ impl Case {
     pub fn solver_with_cells(&self, cells: Option<usize>) -> Result<MarchOptions> {
         let mut options = self.solver;
         if let Some(n) = cells {
-            options.cells = count_in(&RawCount::Integer(n as i128), "--cells", 8, MAX_CELLS)?;
+            let n = count_in(
+                &RawCount::Integer(n as i128),
+                "--cells",
+                MIN_CELLS,
+                MAX_CELLS,
+            )?;
+            options = options.with_cells(n)?;
         }
         Ok(options)
     }
@@ -282,13 +286,10 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
     let mut solver = MarchOptions::default();
     if let Some(raw_solver) = raw.solver {
         if let Some(cells) = &raw_solver.cells {
-            solver.cells = count_in(cells, "solver.cells", 8, MAX_CELLS)?;
+            solver = solver.with_cells(count_in(cells, "solver.cells", MIN_CELLS, MAX_CELLS)?)?;
         }
         if let Some(t) = raw_solver.slip_tolerance {
-            if !(t.is_finite() && t > 0.0 && t < 1.0) {
-                bail!("invalid solver.slip_tolerance = {t}: must be a number with 0 < t < 1 (a fraction of A f P)");
-            }
-            solver.slip_tolerance = t;
+            solver = solver.with_slip_tolerance(t)?;
         }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.

@@ -238,7 +238,7 @@ fn run(cli: Cli) -> Result<()> {
                 emit(&report::march_table(
                     &result,
                     &history,
-                    options.shakedown_tolerance,
+                    options.shakedown_tolerance(),
                 ))?;
             }
         }

@@ -256,10 +256,7 @@ fn evolution_overlays_exact_asymptotic_and_marched_stick_zones() {
     let result = march(
         &c,
         &history,
-        &MarchOptions {
-            cells: 200,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(200).unwrap(),
         |_, _| {},
     )
     .unwrap();
@@ -308,10 +305,7 @@ fn march_figures_hold_fields_and_zones_and_png_is_valid() {
     let result = march(
         &c,
         &history,
-        &MarchOptions {
-            cells: 100,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(100).unwrap(),
         |r, f| recorder.observe(r.step, f, 0.6),
     )
     .unwrap();
@@ -408,10 +402,7 @@ fn bad_requests_are_clear_errors() {
     let result = march(
         &contact(),
         &history,
-        &MarchOptions {
-            cells: 20,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(20).unwrap(),
         |_, _| {},
     )
     .unwrap();

@@ -29,11 +29,11 @@ fn run(contact: &Contact, history: &History, cells: usize, solver: LinearSolver)
     let r = march(
         black_box(contact),
         black_box(history),
-        &MarchOptions {
-            cells,
-            solver,
-            ..Default::default()
-        },
+        &MarchOptions::default()
+            .with_cells(cells)
+            .unwrap()
+            .with_solver(solver)
+            .unwrap(),
         |_, _| {},
     )
     .unwrap();

@@ -21,10 +21,7 @@ fn main() {
     let r = march(
         &contact,
         &history,
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |s, _| {
             passes += s.passes;
             if std::env::var_os("HP_PASSES").is_some() {

@@ -192,6 +192,16 @@ pub enum Error {
         iterations: usize,
     },
 
+    /// A dense Cholesky factorisation met a pivot that is not positive: the stick block of the
+    /// kernel matrix is not numerically positive definite (it is in exact arithmetic).
+    #[error("the dense Cholesky factorisation at step {step} met a non-positive pivot at cell {index}; use the Toeplitz solver or fewer cells")]
+    NonPositivePivot {
+        /// 1-based increment.
+        step: usize,
+        /// 0-based cell index of the failed pivot.
+        index: usize,
+    },
+
     /// An iterative solve did not reach its tolerance.
     #[error(
         "{what} did not converge in {iterations} iterations (last relative step {last_step:e})"

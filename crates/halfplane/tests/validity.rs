@@ -48,10 +48,7 @@ fn march_cycle(
     let r = march(
         c,
         &history,
-        &MarchOptions {
-            cells,
-            ..Default::default()
-        },
+        &MarchOptions::default().with_cells(cells).unwrap(),
         |_, fields| {
             forward.push(
                 (0..fields.x.len())

@@ -142,6 +142,11 @@ impl Toeplitz {
         })
     }
 
+    /// The first row (and column) of the full matrix.
+    pub fn row(&self) -> &[f64] {
+        &self.row
+    }
+
     /// `y = T_N v` (full grid), by the circulant embedding.
     pub fn apply(&mut self, v: &[f64], y: &mut [f64]) {
         let n = self.row.len();
