@@ -76,17 +76,24 @@ fuzz_target!(|input: Input| {
     let Ok(history) = history else {
         return;
     };
-    let mut options = MarchOptions {
-        cells: 6 + usize::from(input.cells % 27),
-        solver: if input.dense {
-            LinearSolver::Dense
-        } else {
-            LinearSolver::Toeplitz
-        },
-        ..MarchOptions::default()
+    // Out-of-range settings must be typed errors; fuzz them through the setters.
+    let solver = if input.dense {
+        LinearSolver::Dense
+    } else {
+        LinearSolver::Toeplitz
+    };
+    let mut options = match MarchOptions::default()
+        .with_cells(6 + usize::from(input.cells % 27))
+        .and_then(|o| o.with_solver(solver))
+    {
+        Ok(o) => o,
+        Err(_) => return,
     };
     if let Some(t) = input.slip_tolerance {
-        options.slip_tolerance = t.0;
+        match options.with_slip_tolerance(t.0) {
+            Ok(o) => options = o,
+            Err(_) => return,
+        }
     }
     if let Ok(m) = march::march(&contact, &history, &options, check_step) {
         check_march(&m);

@@ -333,8 +333,10 @@ pub fn check_case(case: &halfplane_cli::case::Case, max_rows: usize, max_cells: 
             finite("history bulk", p.bulk(), p);
         }
         if history.loads().len() <= max_rows {
-            let mut options = case.solver;
-            options.cells = options.cells.min(max_cells);
+            let cells = case.solver.cells().min(max_cells);
+            let Ok(options) = case.solver.with_cells(cells) else {
+                return;
+            };
             if let Ok(m) = march::march(&case.contact, &history, &options, check_step) {
                 check_march(&m);
             }
