@@ -167,7 +167,11 @@ pub fn check_steady(s: &SteadyState) {
         finite("criterion", *r, s);
         assert!(*r >= 0.0, "criterion ratio {r} in {s:?}");
     }
-    assert!(c.full_stick_ratio >= 0.0, "full-stick ratio {} in {s:?}", c.full_stick_ratio);
+    assert!(
+        c.full_stick_ratio >= 0.0,
+        "full-stick ratio {} in {s:?}",
+        c.full_stick_ratio
+    );
     if let Some(z) = s.stick_zone {
         finite("stick zone left", z.left, s);
         finite("stick zone right", z.right, s);
