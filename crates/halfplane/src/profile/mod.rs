@@ -32,6 +32,7 @@ use crate::error::{physical, physical_positive, Error, Result};
 use crate::quadrature::Rule;
 use pieces::{Piece, Pieces};
 use power::PowerSlope;
+pub(crate) use pressure::pressure_log_term;
 pub use table::MAX_TABLE_ROWS;
 
 /// The user-facing description of a profile, as constructed.

@@ -3,6 +3,7 @@
 //! there, and its contact-law moment in closed form (the Wallis integral).
 
 use super::StickIntegrals;
+use crate::closed_form;
 use crate::quadrature::{gauss_legendre, Rule};
 use std::f64::consts::PI;
 
@@ -54,11 +55,11 @@ impl PowerSlope {
         (j0, j1)
     }
 
-    /// `J1(a, 0)` and `dJ1/da` in closed form: `integral_0^pi |cos t|^k dt = 2 W_k`, with
-    /// `W_k = (sqrt(pi)/2) Gamma((k+1)/2)/Gamma(k/2+1)`.
+    /// `J1(a, 0)` and `dJ1/da` in closed form: `integral_0^pi |cos t|^k dt = 2 W_k`, with `W_k`
+    /// the Wallis integral ([`closed_form::wallis_integral`]).
     pub(super) fn symmetric_moment(&self, a: f64) -> (f64, f64) {
         let k = self.exponent;
-        let wallis = 0.5 * PI.sqrt() * libm::tgamma(0.5 * (k + 1.0)) / libm::tgamma(0.5 * k + 1.0);
+        let wallis = closed_form::wallis_integral(k);
         let j1 = 2.0 * self.coefficient * k * wallis * a.powf(k);
         (j1, k * j1 / a)
     }

@@ -4,6 +4,15 @@
 use super::pieces::angle_between;
 use super::{Profile, Slope};
 
+/// The antiderivative `L(t) = integral dt/(a cos t - x) = ln|(k + u)/(k - u)|/sqrt(a^2 - x^2)` at
+/// `u = tan(t/2)`, with `k = sqrt((a - x)/(a + x))` and `root = sqrt(a^2 - x^2)` for `|x| < a`
+/// (the half-angle substitution `u = tan(t/2)` makes the integrand rational). Both pressure
+/// routes multiply differences of it by the jump between a piece's continued slope formula and
+/// g'(x). Callers pass `k` and `root` as they computed them, so each keeps its own rounding.
+pub(crate) fn pressure_log_term(k: f64, u: f64, root: f64) -> f64 {
+    ((k + u) / (k - u)).abs().ln() / root
+}
+
 impl Profile {
     /// For piecewise-polynomial slopes, the regular part of the pressure integral in closed form:
     /// `integral_0^pi (g'(a cos t) - g'(x))/(a cos t - x) dt` (see [`crate::Contact::pressure`]).
@@ -24,8 +33,7 @@ impl Profile {
             if c <= -1.0 {
                 0.0
             } else {
-                let u = s / (1.0 + c);
-                ((k + u) / (k - u)).abs().ln() / root
+                pressure_log_term(k, s / (1.0 + c), root)
             }
         };
         let angle = |xi: f64| {
