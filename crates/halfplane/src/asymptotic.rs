@@ -6,37 +6,11 @@
 //! the shear at the left edge and subtracts at the right.
 
 use crate::error::{Error, Result};
+pub use crate::labels::Edge;
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::steady::StickZone;
 use std::f64::consts::PI;
-
-/// A contact edge.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Edge {
-    /// x = -a.
-    Left,
-    /// x = +a.
-    Right,
-}
-
-impl Edge {
-    /// +1 at the left edge, -1 at the right: the sign of the bulk-tension term.
-    fn bulk_sign(self) -> f64 {
-        match self {
-            Edge::Left => 1.0,
-            Edge::Right => -1.0,
-        }
-    }
-
-    /// "left" or "right".
-    pub fn name(self) -> &'static str {
-        match self {
-            Edge::Left => "left",
-            Edge::Right => "right",
-        }
-    }
-}
 
 /// Shear intensity in full stick: `K_T = Q/(pi sqrt(2a)) +/- (sigma/4) sqrt(a/2)`, + at the left
 /// edge (THEORY.md "Asymptotic edge description").

@@ -25,13 +25,15 @@
 //! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`closed_form`] (reference
-//! solutions), [`load`] and [`material`] (validated inputs), [`error`].
+//! solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
+//! and pairs indexed by them), [`error`].
 
 pub mod asymptotic;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;
 pub mod history;
+pub mod labels;
 pub mod load;
 pub mod material;
 pub mod normal;
@@ -41,6 +43,7 @@ mod spline;
 pub mod steady;
 
 pub use error::{Error, Result};
+pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};
 pub use load::{Cycle, LoadPoint};
 pub use material::{Compliance, Friction, Material};
 pub use normal::Contact;
