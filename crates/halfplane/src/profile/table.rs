@@ -180,32 +180,14 @@ impl Profile {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The flat-rounded punch b = 0.3, R = 50 sampled at `rows` evenly spaced x in [0, 2]; the
-    /// clamped spline reproduces it exactly (a quadratic on each side of the kink at 0.3).
-    fn flat_rounded_table(rows: usize) -> Profile {
-        let x: Vec<f64> = (0..rows)
-            .map(|i| 2.0 * i as f64 / (rows - 1) as f64)
-            .collect();
-        let g = x
-            .iter()
-            .map(|&x| {
-                if x <= 0.3 {
-                    0.0
-                } else {
-                    (x - 0.3).powi(2) / 100.0
-                }
-            })
-            .collect();
-        Profile::tabulated(x, g, vec![0.3]).unwrap()
-    }
+    use crate::reference;
 
     #[test]
     fn a_long_table_is_set_up_in_linear_time_with_exact_brackets() {
         // 100,000 rows took 106 s in release when every knot's J1 was computed (O(n^2)); in
         // linear time they take well under a second even in debug.
         let start = std::time::Instant::now();
-        let table = flat_rounded_table(100_001);
+        let table = reference::flat_rounded_table(100_001).unwrap();
         let took = start.elapsed();
         assert!(took.as_secs() < 10, "setup took {took:?}");
         let Slope::Pieces(p) = &table.slope else {
@@ -237,7 +219,7 @@ mod tests {
 
     #[test]
     fn small_tables_keep_every_knot() {
-        let table = flat_rounded_table(41);
+        let table = reference::flat_rounded_table(41).unwrap();
         let Slope::Pieces(p) = &table.slope else {
             unreachable!("a table is piecewise")
         };
