@@ -27,6 +27,7 @@ pub fn equivalent_shear(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f
 
 /// The edge quantities at one load point.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct EdgeState {
     /// Contact half-width a.
     pub half_width: f64,
@@ -84,6 +85,7 @@ pub fn stick_zone_from_slip(half_width: f64, slip: [f64; 2]) -> StickZone {
 
 /// The asymptotic description of a steady in-phase cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct AsymptoticSteady {
     /// Edge quantities at the first and second points as given.
     pub edges: [EdgeState; 2],

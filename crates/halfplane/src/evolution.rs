@@ -48,6 +48,7 @@ display_as_str!(PointState);
 
 /// The state at one point of a half-cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct EvolutionPoint {
     /// 1: from the first point as given to the second; 2: back.
     pub half: u8,
@@ -91,6 +92,7 @@ pub enum EvolutionWarning {
 
 /// The stick zone along the cycle.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Evolution {
     /// The regime of the steady state.
     pub regime: Regime,

@@ -20,6 +20,7 @@ mod validity;
 
 /// How the stick zone is found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Method {
     /// Closed form for Hertz, the implicit equations otherwise (default).
     #[default]
@@ -108,6 +109,7 @@ display_as_str!(Regime);
 
 /// The figures the regime was decided from.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Criteria {
     /// `|Q|/P` at the first and second points as given (gross sliding when >= f).
     pub shear_ratio: [f64; 2],
@@ -122,6 +124,7 @@ pub struct Criteria {
 
 /// Slip-zone extents (lengths from the contact edge to the stick zone) at both ends of the cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct SlipZones {
     /// Left edge `a_i - m` at the first and second points as given.
     pub left: [f64; 2],
@@ -131,6 +134,7 @@ pub struct SlipZones {
 
 /// Result of [`analyse`].
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct SteadyState {
     /// The cycle, labelled by Q.
     pub cycle: Cycle,
