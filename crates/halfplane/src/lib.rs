@@ -26,7 +26,7 @@
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`closed_form`] (reference
 //! solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
-//! and pairs indexed by them), [`reference`] (the reference cycle of `docs/theory.md`), [`error`].
+//! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
 pub mod closed_form;
