@@ -4,22 +4,16 @@
 use halfplane::evolution::evolve;
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions};
-use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, SteadyOptions};
+use halfplane::{reference, Contact, Cycle, SteadyOptions};
 use halfplane_plot::*;
 
+/// The reference cycle of docs/theory.md ([`halfplane::reference`]).
 fn contact() -> Contact {
-    Contact::new(
-        Profile::hertz(50.0).unwrap(),
-        Material::new(200_000.0, 0.3).unwrap(),
-        Friction::new(0.6).unwrap(),
-    )
+    reference::hertz()
 }
 
 fn cycle() -> Cycle {
-    Cycle::new(
-        LoadPoint::new("p1", 1000.0, -250.0, -20.0).unwrap(),
-        LoadPoint::new("p2", 1400.0, 250.0, 20.0).unwrap(),
-    )
+    reference::cycle()
 }
 
 fn units() -> Units {

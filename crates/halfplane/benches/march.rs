@@ -5,20 +5,14 @@
 use divan::black_box;
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, LinearSolver, MarchOptions};
-use halfplane::{Contact, Friction, LoadPoint, Material, Profile};
+use halfplane::{reference, Contact};
 
 fn main() {
     divan::main();
 }
 
-fn case(profile: Profile) -> (Contact, History) {
-    let contact = Contact::new(
-        profile,
-        Material::new(200_000.0, 0.3).unwrap(),
-        Friction::new(0.6).unwrap(),
-    );
-    let p1 = LoadPoint::new("p1", 1000.0, -250.0, -20.0).unwrap();
-    let p2 = LoadPoint::new("p2", 1400.0, 250.0, 20.0).unwrap();
+fn case(contact: Contact) -> (Contact, History) {
+    let (p1, p2) = (reference::point1(), reference::point2());
     (
         contact,
         History::in_phase(p1, p2, 3, 45, Ramp::NormalFirst, 15).unwrap(),
@@ -42,25 +36,25 @@ fn run(contact: &Contact, history: &History, cells: usize, solver: LinearSolver)
 
 #[divan::bench(args = [100, 250, 500, 1000, 2000], sample_count = 5, sample_size = 1)]
 fn hertz_toeplitz(b: divan::Bencher, cells: usize) {
-    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    let (c, h) = case(reference::hertz());
     b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
 }
 
 // 1000 cells takes about 2 minutes per sample (see BENCHMARKS.md); kept out of the routine run.
 #[divan::bench(args = [100, 250, 500], sample_count = 3, sample_size = 1)]
 fn hertz_dense(b: divan::Bencher, cells: usize) {
-    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    let (c, h) = case(reference::hertz());
     b.bench(|| run(&c, &h, cells, LinearSolver::Dense));
 }
 
 #[divan::bench(args = [1000], sample_count = 5, sample_size = 1)]
 fn flat_rounded_toeplitz(b: divan::Bencher, cells: usize) {
-    let (c, h) = case(Profile::flat_rounded(0.3, 50.0).unwrap());
+    let (c, h) = case(reference::flat_rounded());
     b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
 }
 
 #[divan::bench(args = [8000], sample_count = 1, sample_size = 1)]
 fn hertz_toeplitz_large(b: divan::Bencher, cells: usize) {
-    let (c, h) = case(Profile::hertz(50.0).unwrap());
+    let (c, h) = case(reference::hertz());
     b.bench(|| run(&c, &h, cells, LinearSolver::Toeplitz));
 }

@@ -6,37 +6,11 @@
 //! the shear at the left edge and subtracts at the right.
 
 use crate::error::{Error, Result};
+pub use crate::labels::Edge;
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::steady::StickZone;
 use std::f64::consts::PI;
-
-/// A contact edge.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Edge {
-    /// x = -a.
-    Left,
-    /// x = +a.
-    Right,
-}
-
-impl Edge {
-    /// +1 at the left edge, -1 at the right: the sign of the bulk-tension term.
-    fn bulk_sign(self) -> f64 {
-        match self {
-            Edge::Left => 1.0,
-            Edge::Right => -1.0,
-        }
-    }
-
-    /// "left" or "right".
-    pub fn name(self) -> &'static str {
-        match self {
-            Edge::Left => "left",
-            Edge::Right => "right",
-        }
-    }
-}
 
 /// Shear intensity in full stick: `K_T = Q/(pi sqrt(2a)) +/- (sigma/4) sqrt(a/2)`, + at the left
 /// edge (THEORY.md "Asymptotic edge description").
@@ -53,6 +27,7 @@ pub fn equivalent_shear(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f
 
 /// The edge quantities at one load point.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct EdgeState {
     /// Contact half-width a.
     pub half_width: f64,
@@ -110,6 +85,7 @@ pub fn stick_zone_from_slip(half_width: f64, slip: [f64; 2]) -> StickZone {
 
 /// The asymptotic description of a steady in-phase cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct AsymptoticSteady {
     /// Edge quantities at the first and second points as given.
     pub edges: [EdgeState; 2],

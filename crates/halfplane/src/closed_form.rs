@@ -55,12 +55,19 @@ pub fn flat_rounded_load(
         * (0.5 * PI - phi0 - phi0.sin() * phi0.cos())
 }
 
-/// Power law `g = B|x|^k`: `P = (2 B k a^k / A) W_k` with the Wallis integral
-/// `W_k = integral_0^{pi/2} sin^k phi dphi = (sqrt(pi)/2) Gamma((k+1)/2)/Gamma(k/2 + 1)`
-/// (from `P = (1/A) integral x g'(x)/sqrt(a^2 - x^2) dx`, THEORY.md).
+/// The Wallis integral `W_k = integral_0^{pi/2} sin^k phi dphi
+/// = (sqrt(pi)/2) Gamma((k+1)/2)/Gamma(k/2 + 1)` for real `k > -1` (Abramowitz & Stegun 6.2.1
+/// and 6.2.2 with `B(a, b) = 2 integral_0^{pi/2} sin^(2a-1) cos^(2b-1)`; for whole k, Wallis's
+/// formulas). Also `integral_0^pi |cos t|^k dt = 2 W_k`, the contact-law moment of the power law.
+pub fn wallis_integral(k: f64) -> f64 {
+    0.5 * PI.sqrt() * libm::tgamma(0.5 * (k + 1.0)) / libm::tgamma(0.5 * k + 1.0)
+}
+
+/// Power law `g = B|x|^k`: `P = (2 B k a^k / A) W_k` with the Wallis integral `W_k`
+/// ([`wallis_integral`]), from `P = (1/A) integral x g'(x)/sqrt(a^2 - x^2) dx` (THEORY.md).
 pub fn power_law_load(compliance: f64, coefficient: f64, exponent: f64, half_width: f64) -> f64 {
     let k = exponent;
-    let wallis = 0.5 * PI.sqrt() * libm::tgamma(0.5 * (k + 1.0)) / libm::tgamma(0.5 * k + 1.0);
+    let wallis = wallis_integral(k);
     2.0 * coefficient * k * half_width.powf(k) * wallis / compliance
 }
 

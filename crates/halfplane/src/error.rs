@@ -1,7 +1,7 @@
 //! Typed errors. Every variant carries the offending value and says what would be valid, so a
 //! caller (CLI, Python binding, sweep driver) can report it without string parsing.
 
-use crate::asymptotic::Edge;
+use crate::labels::Edge;
 use thiserror::Error;
 
 /// Everything that can go wrong in the library. Messages state the problem and what would be

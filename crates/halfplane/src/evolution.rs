@@ -11,6 +11,7 @@
 
 use crate::asymptotic::{self, Edge, EdgeState};
 use crate::error::{Error, Result};
+use crate::labels::{display_as_str, Half, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::steady::{self, Regime, Segment, SteadyOptions, StickZone};
@@ -32,8 +33,22 @@ pub enum PointState {
     },
 }
 
+impl PointState {
+    /// "full-stick", "partial-slip" or "one-edge-slip": the names the CLI prints.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            PointState::FullStick => "full-stick",
+            PointState::PartialSlip => "partial-slip",
+            PointState::OneEdgeSlip { .. } => "one-edge-slip",
+        }
+    }
+}
+
+display_as_str!(PointState);
+
 /// The state at one point of a half-cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct EvolutionPoint {
     /// 1: from the first point as given to the second; 2: back.
     pub half: u8,
@@ -77,6 +92,7 @@ pub enum EvolutionWarning {
 
 /// The stick zone along the cycle.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Evolution {
     /// The regime of the steady state.
     pub regime: Regime,
@@ -112,18 +128,11 @@ pub fn evolve(
     }
     let steady = steady::analyse(contact, cycle, options)?;
     let (first, second) = cycle.as_given();
+    let given = PerPoint { first, second };
     if let Regime::GrossSliding { point } = steady.regime {
-        let p = if point == steady::GivenPoint::First {
-            first
-        } else {
-            second
-        };
+        let p = given[point];
         return Err(Error::GrossSliding {
-            point: if point == steady::GivenPoint::First {
-                "first"
-            } else {
-                "second"
-            },
+            point: point.as_str(),
             shear: p.shear().abs(),
             limit: contact.friction.value() * p.normal(),
         });
@@ -131,7 +140,8 @@ pub fn evolve(
     let f = contact.friction.value();
     let mut points = Vec::with_capacity(2 * points_per_half);
     let mut warnings = Vec::new();
-    for (half, start, end) in [(1u8, first, second), (2u8, second, first)] {
+    for half in Half::BOTH {
+        let (start, end) = (given[half.start()], given[half.end()]);
         let start_edges = EdgeState::at(contact, &start)?;
         let rising = end.shear() >= start.shear();
         let mut guess = None;
@@ -190,7 +200,7 @@ pub fn evolve(
                 ] {
                     if moved_out {
                         warnings.push(EvolutionWarning::NonMonotoneSlip {
-                            half,
+                            half: half.number(),
                             edge,
                             fraction,
                         });
@@ -200,15 +210,14 @@ pub fn evolve(
             if state != PointState::FullStick {
                 previous = Some(zone);
             }
-            let slip = [Edge::Left, Edge::Right]
-                .map(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
+            let slip = Edge::BOTH.map(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
             let asymptotic_stick_zone = if steady.regime == Regime::PartialSlip {
                 asymptotic::stick_zone_from_slip(a_x, slip)
             } else {
                 whole
             };
             points.push(EvolutionPoint {
-                half,
+                half: half.number(),
                 fraction,
                 load,
                 half_width: a_x,
@@ -219,7 +228,7 @@ pub fn evolve(
         }
         if one_edge > 0 {
             warnings.push(EvolutionWarning::OneEdgeSlip {
-                half,
+                half: half.number(),
                 count: one_edge,
             });
         }

@@ -25,22 +25,26 @@
 //! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`closed_form`] (reference
-//! solutions), [`load`] and [`material`] (validated inputs), [`error`].
+//! solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
+//! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;
 pub mod history;
+pub mod labels;
 pub mod load;
 pub mod material;
 pub mod normal;
 pub mod profile;
 mod quadrature;
+pub mod reference;
 mod spline;
 pub mod steady;
 
 pub use error::{Error, Result};
+pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};
 pub use load::{Cycle, LoadPoint};
 pub use material::{Compliance, Friction, Material};
 pub use normal::Contact;

@@ -6,7 +6,7 @@
 use crate::closed_form;
 use crate::error::{positive, Error, Result};
 use crate::material::{Compliance, Friction, Material};
-use crate::profile::{Profile, Shape};
+use crate::profile::{pressure_log_term, Profile, Shape};
 use crate::quadrature::gauss_legendre;
 use std::f64::consts::PI;
 
@@ -210,8 +210,7 @@ impl Contact {
             if t >= PI {
                 0.0
             } else {
-                let u = (0.5 * t).tan();
-                ((k + u) / (k - u)).abs().ln() / root
+                pressure_log_term(k, (0.5 * t).tan(), root)
             }
         };
         let theta_x = (x / a).acos();

@@ -1,27 +1,23 @@
 //! Shared fixtures and an independent brute-force integrator for the tests.
 #![allow(dead_code)]
 
-use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
+use halfplane::{reference, Contact, Cycle, LoadPoint, Profile};
 
-/// THEORY.md's example material and friction.
+/// THEORY.md's example material and friction ([`halfplane::reference`]).
 pub fn contact(profile: Profile) -> Contact {
-    Contact::new(
-        profile,
-        Material::new(200_000.0, 0.3).unwrap(),
-        Friction::new(0.6).unwrap(),
-    )
+    reference::contact(profile)
 }
 
 pub fn point(normal: f64, shear: f64, bulk: f64) -> LoadPoint {
     LoadPoint::new("test", normal, shear, bulk).unwrap()
 }
 
-/// THEORY.md's checked cycle.
+/// THEORY.md's checked cycle ([`halfplane::reference`]).
 pub fn theory_cycle() -> Cycle {
-    Cycle::new(point(1000.0, -250.0, -20.0), point(1400.0, 250.0, 20.0))
+    reference::cycle()
 }
 
-pub const RADIUS: f64 = 50.0;
+pub const RADIUS: f64 = reference::RADIUS;
 
 /// Tabulated samples of a profile function g on [0, end] with `n` intervals.
 pub fn sampled(g: impl Fn(f64) -> f64, end: f64, n: usize) -> (Vec<f64>, Vec<f64>) {
