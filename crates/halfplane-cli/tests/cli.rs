@@ -19,7 +19,7 @@ fn steady_json_has_the_documented_fields() {
             .and_then(|x| x.as_f64())
             .unwrap_or_else(|| panic!("missing {path}"))
     };
-    // THEORY.md's checked values, to the 5 figures it quotes.
+    // The reference cycle's checked values, to the 5 figures it quotes.
     for (path, want) in [
         ("/contact/half_width_1", 0.76113),
         ("/contact/half_width_2", 0.90059),

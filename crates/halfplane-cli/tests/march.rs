@@ -17,7 +17,7 @@ fn csv_rows_follow_the_history_and_end_on_the_steady_stick_zone() {
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 300, "30 ramp + 3 cycles of 90 increments");
     let last = &rows[299];
-    // 400 cells over a2 = 0.90059: a cell is 0.0045; THEORY.md's stick zone [-0.66607, 0.68123].
+    // 400 cells over a2 = 0.90059: a cell is 0.0045; the reference stick zone [-0.66607, 0.68123].
     let (l, r): (f64, f64) = (last[5].parse().unwrap(), last[6].parse().unwrap());
     assert!(
         (l + 0.66607).abs() < 0.0045 && (r - 0.68123).abs() < 0.0045,

@@ -1,4 +1,4 @@
-//! Time marching through a ramp and three in-phase cycles (THEORY.md's Hertz cycle: 30 ramp + 270
+//! Time marching through a ramp and three in-phase cycles (the reference cycle of docs/theory.md: 30 ramp + 270
 //! cycle increments = 300), by cell count and linear solver.
 //! Run: `cargo bench -p halfplane --bench march`.
 

@@ -1,5 +1,5 @@
 //! One steady-state solve (`steady::analyse`: both contact half-widths, regime checks and the
-//! permanent stick zone) per profile, on THEORY.md's example cycle.
+//! permanent stick zone) per profile, on the reference cycle.
 //! Run: `cargo bench -p halfplane --bench steady`.
 
 use divan::black_box;

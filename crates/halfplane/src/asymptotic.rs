@@ -1,5 +1,5 @@
 //! The asymptotic edge description (paper, section "Asymptotic representation"; Fleury et al.
-//! 2017), with the slip-zone formulas as corrected in THEORY.md.
+//! 2017), with the slip-zone formulas as corrected in docs/theory.md.
 //!
 //! Sign convention: a full-stick shear traction behaves as `q ~ K_T/sqrt(s)` at distance s from
 //! an edge, with q positive in the direction of positive Q at both edges. Bulk tension adds to
@@ -13,13 +13,13 @@ use crate::steady::StickZone;
 use std::f64::consts::PI;
 
 /// Shear intensity in full stick: `K_T = Q/(pi sqrt(2a)) +/- (sigma/4) sqrt(a/2)`, + at the left
-/// edge (THEORY.md "Asymptotic edge description").
+/// edge (docs/theory.md, "Asymptotic edge description").
 pub fn shear_intensity(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f64 {
     shear / (PI * (2.0 * half_width).sqrt())
         + edge.bulk_sign() * 0.25 * bulk * (0.5 * half_width).sqrt()
 }
 
-/// Equivalent shear force `S = Q +/- pi a sigma/4` (paper eq. `equivalent_shear_force`), the shear
+/// Equivalent shear force `S = Q +/- pi a sigma/4` (paper eq. (33)), the shear
 /// alone that gives the same K_T at that edge.
 pub fn equivalent_shear(shear: f64, bulk: f64, half_width: f64, edge: Edge) -> f64 {
     shear + edge.bulk_sign() * PI * half_width * bulk / 4.0
@@ -66,7 +66,7 @@ impl EdgeState {
 }
 
 /// Slip-zone size at `edge` when the load has moved from the reversal point `start` to `now`
-/// (THEORY.md, corrected form of the paper's eqs. `forward_slip`/`reverse_slip`):
+/// (docs/theory.md, corrected form of the paper's eqs. (37) and (38)):
 /// `w = |K_T(now) - K_T(start)|/(f K_N(now)) + (a_now - a_start)/2`.
 /// Not clamped: `w <= 0` means that edge still sticks.
 pub fn slip_zone_size(start: &EdgeState, now: &EdgeState, friction: f64, edge: Edge) -> f64 {

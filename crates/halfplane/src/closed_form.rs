@@ -3,11 +3,11 @@
 //!
 //! Conventions: plane strain, composite compliance `A = 4(1 - nu^2)/E`, half-widths in the length
 //! unit of the profile, P and Q per unit thickness; `dsigma = sigma1 - sigma2` and
-//! `dQ = Q2 - Q1 >= 0` with point 1 the end of smaller Q (THEORY.md).
+//! `dQ = Q2 - Q1 >= 0` with point 1 the end of smaller Q (docs/theory.md).
 
 use std::f64::consts::PI;
 
-/// Hertz contact law `a^2 = 2 P A R / pi` (paper eq. `Hertz_contactlaw`).
+/// Hertz contact law `a^2 = 2 P A R / pi` (paper eq. (24)).
 pub fn hertz_half_width(compliance: f64, radius: f64, normal: f64) -> f64 {
     (2.0 * normal * compliance * radius / PI).sqrt()
 }
@@ -23,9 +23,8 @@ pub fn hertz_pressure(compliance: f64, radius: f64, half_width: f64, x: f64) -> 
     }
 }
 
-/// Hertz permanent stick zone `(d, e)`: `e = -A R dsigma/(8 f)` (paper eq.
-/// `Hertz_shift_stick_zone`), `d^2 = (A R/pi)(P1 + P2 - dQ/f)` (eq.
-/// `Hertz_permanent_stick_zone`). `None` when `d^2 <= 0` (no stick zone).
+/// Hertz permanent stick zone `(d, e)`: `e = -A R dsigma/(8 f)` (paper eq. (28)),
+/// `d^2 = (A R/pi)(P1 + P2 - dQ/f)` (eq. (30)). `None` when `d^2 <= 0` (no stick zone).
 pub fn hertz_stick_zone(
     compliance: f64,
     radius: f64,
@@ -40,7 +39,7 @@ pub fn hertz_stick_zone(
 }
 
 /// Flat punch with rounded edges: `P = (a^2/(A R)) [pi/2 - phi0 - sin phi0 cos phi0]`,
-/// `sin phi0 = b/a` (THEORY.md "Normal problem"; Ciavarella, Hills & Monno 1998). Zero for a <= b.
+/// `sin phi0 = b/a` (docs/theory.md, "Normal contact"; Ciavarella, Hills & Monno 1998). Zero for a <= b.
 pub fn flat_rounded_load(
     compliance: f64,
     flat_half_width: f64,
@@ -64,7 +63,7 @@ pub fn wallis_integral(k: f64) -> f64 {
 }
 
 /// Power law `g = B|x|^k`: `P = (2 B k a^k / A) W_k` with the Wallis integral `W_k`
-/// ([`wallis_integral`]), from `P = (1/A) integral x g'(x)/sqrt(a^2 - x^2) dx` (THEORY.md).
+/// ([`wallis_integral`]), from `P = (1/A) integral x g'(x)/sqrt(a^2 - x^2) dx` (docs/theory.md).
 pub fn power_law_load(compliance: f64, coefficient: f64, exponent: f64, half_width: f64) -> f64 {
     let k = exponent;
     let wallis = wallis_integral(k);

@@ -1,7 +1,7 @@
 //! Exact evolution of the stick zone along the steady in-phase cycle (beyond the paper).
 //!
 //! At a point X of a half-cycle, the stick-zone equations hold for the partial path from the last
-//! reversal point to X, labelled by Q (THEORY.md "Slip zones along the cycle, exactly"): on the
+//! reversal point to X, labelled by Q (docs/theory.md, "Slip zones along the cycle, exactly"): on the
 //! half where Q rises, X replaces point 2; where Q falls, X replaces point 1. The relation is exact
 //! while both slip zones grow monotonically from the reversal; [`evolve`] calls
 //! [`steady::analyse`], which rejects partial-slip cycles where they do not

@@ -5,7 +5,7 @@
 //! Each label has a stable name (`as_str`, also its `Display`): the words the command-line front
 //! end prints and reads, so they are a public interface and do not change.
 //!
-//! Conventions (THEORY.md "Conventions"): the *left* edge `x = -a` is the one where bulk tension
+//! Conventions (docs/theory.md, "Conventions"): the *left* edge `x = -a` is the one where bulk tension
 //! adds to the shear. Points are "as given", not the internal labelling by Q; half 1 runs from the
 //! first point as given to the second, half 2 back.
 

@@ -3,7 +3,7 @@
 //! Frictional contact of elastically similar bodies idealised as half-planes, under varying
 //! normal load P, shear load Q and bulk tension sigma (plane strain, Coulomb friction).
 //!
-//! The sign conventions are those of the project's `THEORY.md`: point 1 of a cycle is the end with
+//! The sign conventions are those of `docs/theory.md`: point 1 of a cycle is the end with
 //! the smaller Q, `dQ = Q2 - Q1 >= 0`, `dsigma = sigma1 - sigma2`, and bulk tension adds to the
 //! shear at the left edge. Every function that implements a formula cites the paper's equation
 //! label (Andresen, Hills, Barber & Vazquez) or its reference.
@@ -18,7 +18,7 @@
 //! );
 //! let state = steady::analyse(&contact, &cycle, &SteadyOptions::default())?;
 //! let zone = state.stick_zone.unwrap();
-//! assert!((zone.right - 0.68123).abs() < 1e-5); // THEORY.md's checked value
+//! assert!((zone.right - 0.68123).abs() < 1e-5); // the reference cycle's checked value
 //! # Ok::<(), halfplane::Error>(())
 //! ```
 //!

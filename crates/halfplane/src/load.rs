@@ -1,6 +1,6 @@
 //! Load points and the in-phase cycle between two of them.
 //!
-//! Sign conventions (THEORY.md "Load cycle and labelling"): `normal` P > 0 compresses the contact;
+//! Sign conventions (docs/theory.md, "Conventions"): `normal` P > 0 compresses the contact;
 //! `shear` Q and `bulk` sigma (tension in one body, parallel to the interface) are positive as in
 //! the paper's Figure 1. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
 //! so `dQ = Q2 - Q1 >= 0`, and the paper's `dsigma = sigma1 - sigma2`.

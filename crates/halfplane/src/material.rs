@@ -41,7 +41,7 @@ impl Material {
     }
 
     /// Composite compliance of the two half-planes in plane strain, `A = 4(1 - nu^2)/E`
-    /// (paper, below eq. `gap_function`; THEORY.md "Symbols and units").
+    /// (paper, below eq. (3); docs/theory.md, "Conventions").
     pub fn compliance(&self) -> Compliance {
         Compliance(4.0 * (1.0 - self.poisson_ratio * self.poisson_ratio) / self.youngs_modulus)
     }

@@ -38,7 +38,7 @@ impl Contact {
     }
 
     /// Normal load for contact half-width `a`:
-    /// `P(a) = (1/A) integral_{-a}^{a} x g'(x)/sqrt(a^2 - x^2) dx` (THEORY.md "Normal problem").
+    /// `P(a) = (1/A) integral_{-a}^{a} x g'(x)/sqrt(a^2 - x^2) dx` (docs/theory.md, "Normal contact").
     /// Errors when P(a) is not finite and >= 0 (scales that overflow, or cancellation on a punch
     /// whose flat is many orders of magnitude wider than a - b).
     pub fn load(&self, half_width: f64) -> Result<f64> {
@@ -163,7 +163,7 @@ impl Contact {
         })
     }
 
-    /// Contact pressure at `x` for the contact of half-width `a` (THEORY.md "Normal problem"):
+    /// Contact pressure at `x` for the contact of half-width `a` (docs/theory.md, "Normal contact"):
     /// `p(x) = (sqrt(a^2 - x^2)/(pi A)) PV integral g'(xi)/(sqrt(a^2 - xi^2)(xi - x)) dxi`.
     /// Hertz uses its closed form. Otherwise the principal value is removed by subtracting
     /// `g'(x)` (the PV integral of the bare kernel vanishes inside the contact), leaving

@@ -67,14 +67,14 @@ fn asymptotic_estimates_converge_to_the_exact_result_as_the_load_range_shrinks()
 
 #[test]
 fn equivalent_shear_force_gives_the_same_edge_intensity() {
-    // Paper eq. equivalent_shear_force: S alone gives the K_T of Q with sigma, edge by edge.
+    // Paper eq. (33): S alone gives the K_T of Q with sigma, edge by edge.
     for edge in [Edge::Left, Edge::Right] {
         let (q, sigma, a) = (230.0, -35.0, 0.8);
         let s = equivalent_shear(q, sigma, a, edge);
         let k = shear_intensity(q, sigma, a, edge);
         assert!(rel(shear_intensity(s, 0.0, a, edge), k) < 1e-14, "{edge:?}");
     }
-    // Tension adds at the left edge, subtracts at the right (THEORY.md).
+    // Tension adds at the left edge, subtracts at the right (docs/theory.md).
     assert!(
         equivalent_shear(100.0, 10.0, 1.0, Edge::Left)
             > equivalent_shear(100.0, 10.0, 1.0, Edge::Right)
@@ -110,7 +110,7 @@ fn mindlin_slip_zone_is_recovered_for_constant_normal_load() {
 
 #[test]
 fn the_papers_printed_delta_a_sign_does_not_converge() {
-    // THEORY.md: the paper prints w2 = |dK_T|/(f K_N) - (a2 - a1)/2. Its relative error stays
+    // docs/theory.md: the paper prints w2 = |dK_T|/(f K_N) - (a2 - a1)/2. Its relative error stays
     // O(1) as the range shrinks (both terms scale with it), which is why the corrected "+" form
     // is used. Checked at 1/64 of the example range, where the corrected form is within 0.2%.
     let c = contact(Profile::hertz(RADIUS).unwrap());

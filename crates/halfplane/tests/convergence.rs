@@ -76,7 +76,7 @@ fn convergence_against_cattaneo_mindlin_and_the_steady_state() {
         .unwrap();
     let (p1, p2) = cycle.as_given();
     let history = History::in_phase(p1, p2, 2, 45, Ramp::NormalFirst, 15).unwrap();
-    println!("\\nPaper's Hertz cycle (THEORY.md): permanent stick zone [{:.5}, {:.5}] after two cycles of 90 steps", exact.left, exact.right);
+    println!("\\nPaper's Hertz cycle (docs/theory.md): permanent stick zone [{:.5}, {:.5}] after two cycles of 90 steps", exact.left, exact.right);
     println!("| cells | cell width | -m error | n error | time (ms) |");
     println!("|---|---|---|---|---|");
     for cells in [125, 250, 500, 1000, 2000, 4000] {

@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 #[test]
 fn hertz_evolution_follows_the_partial_path_closed_form() {
-    // THEORY.md: on the rising half d_X^2 = (A R/pi)(P1 + PX - (QX - Q1)/f), e_X = -A R
+    // docs/theory.md: on the rising half d_X^2 = (A R/pi)(P1 + PX - (QX - Q1)/f), e_X = -A R
     // (sigma1 - sigmaX)/(8f); the falling half mirrors it from point 2. Tier 1: 1e-12.
     let c = contact(Profile::hertz(RADIUS).unwrap());
     let cycle = theory_cycle();

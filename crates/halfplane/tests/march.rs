@@ -161,7 +161,7 @@ fn bulk_tension_shifts_the_stick_zone_as_nowell_and_hills() {
 
 fn paper_case(profile: Profile, cells: usize) {
     // The paper's steady state: the stick zone at the end of every half-cycle is the permanent
-    // zone; at 1/4, 1/2, 3/4 of each half it is the exact evolution. Within one cell (THEORY.md's
+    // zone; at 1/4, 1/2, 3/4 of each half it is the exact evolution. Within one cell (the reference cycle's
     // independent check was also to a cell).
     let c = contact(profile);
     let cycle = theory_cycle();

@@ -28,7 +28,7 @@ fn hertz_contact_law_by_general_routes_equals_closed_form() {
 
 #[test]
 fn flat_rounded_contact_law_equals_closed_form() {
-    // The piecewise moments and the phi0 formula of THEORY.md are different expressions.
+    // The piecewise moments and the phi0 formula of docs/theory.md are different expressions.
     let (b, r) = (0.3, RADIUS);
     let c = contact(Profile::flat_rounded(b, r).unwrap());
     let a_comp = c.compliance().value();

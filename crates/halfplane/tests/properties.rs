@@ -6,7 +6,7 @@
 //! Hertz, flat-rounded and power-law profiles. Errors are acceptable outcomes but must be the
 //! library's typed [`halfplane::Error`]; a panic fails the property.
 //!
-//! Symmetries (THEORY.md sign conventions; `g` is even, so `g'` is odd):
+//! Symmetries (docs/theory.md sign conventions; `g` is even, so `g'` is odd):
 //! - Swapping the caller's two points changes nothing: the cycle is labelled by Q internally.
 //! - Mirror `x -> -x`: shear traction and Q change sign, but the bulk tension sigma is a normal
 //!   stress `sigma_xx` and does not. In the equations, `(-Q, sigma)` relabels the ends (point 1 is

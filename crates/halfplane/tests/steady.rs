@@ -29,7 +29,7 @@ fn zone(s: &halfplane::SteadyState) -> (f64, f64) {
 
 #[test]
 fn hertz_example_matches_the_independent_marching_check() {
-    // THEORY.md quotes 5 significant figures from a separate time-marching computation.
+    // docs/theory.md quotes 5 significant figures from a separate time-marching computation.
     let s = solve(&contact(Profile::hertz(RADIUS).unwrap()), &theory_cycle());
     assert_eq!(s.regime, Regime::PartialSlip);
     let (left, right) = zone(&s);
@@ -41,7 +41,7 @@ fn hertz_example_matches_the_independent_marching_check() {
         (s.stick_zone.unwrap().half_width(), 0.67365, "d"),
         (s.stick_zone.unwrap().eccentricity(), 0.0075833, "e"),
     ] {
-        assert!(rel(got, want) < 1e-5, "{name} = {got}, THEORY.md {want}");
+        assert!(rel(got, want) < 1e-5, "{name} = {got}, reference {want}");
     }
 }
 
@@ -301,7 +301,7 @@ fn cases_outside_the_papers_assumptions_are_named_errors() {
 
 #[test]
 fn hertz_closed_form_module_is_the_papers_formula() {
-    // eqs. Hertz_shift_stick_zone and Hertz_permanent_stick_zone by hand for the example.
+    // eqs. (28) and (30) by hand for the example.
     let a_comp = 4.0 * (1.0 - 0.09) / 200_000.0;
     let (d, e) = closed_form::hertz_stick_zone(a_comp, RADIUS, 0.6, 2400.0, 500.0, -40.0).unwrap();
     assert!(rel(e, a_comp * RADIUS * 40.0 / 4.8) < 1e-15);

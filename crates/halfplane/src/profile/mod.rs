@@ -3,7 +3,7 @@
 //!
 //! Everything downstream needs only integrals over a zone `[e - d, e + d]` in the variable
 //! `xi = e + d cos(theta)`, which makes the square-root weights of the paper regular
-//! (THEORY.md "Permanent stick zone"):
+//! (docs/theory.md, "Permanent stick zone"):
 //!
 //! - `J0(d, e) = integral_0^pi g'(e + d cos theta) dtheta`
 //! - `J1(d, e) = integral_0^pi xi g'(xi) dtheta`
@@ -266,7 +266,7 @@ impl Profile {
     }
 
     /// `J1(a, 0) = integral_0^pi a cos(t) g'(a cos t) dt` and its derivative in a: the contact law
-    /// is `P = J1/A` (THEORY.md "Normal problem").
+    /// is `P = J1/A` (docs/theory.md, "Normal contact").
     pub(crate) fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
         match &self.slope {
             Slope::Pieces(p) => p.symmetric_moment(a),

@@ -280,8 +280,8 @@ fn no_stick_zone(contact: &Contact, segment: &Segment) -> Error {
     }
 }
 
-/// Solves the two stick-zone equations for a load segment (THEORY.md "Permanent stick zone";
-/// paper eqs. `consistency_cond` and `tangential_equilibrium`, with `xi = e + d cos(theta)`):
+/// Solves the two stick-zone equations for a load segment (docs/theory.md, "Permanent stick zone";
+/// paper eqs. (16) and (23), with `xi = e + d cos(theta)`):
 ///
 /// - `integral_0^pi g'(e + d cos t) dt = -pi A dsigma/(8 f)`
 /// - `f(P1 + P2) - dQ - pi e dsigma/4 = (2f/A) integral_0^pi xi g'(xi) dt`

@@ -3,7 +3,7 @@
 
 use halfplane::{reference, Contact, Cycle, LoadPoint, Profile};
 
-/// THEORY.md's example material and friction ([`halfplane::reference`]).
+/// The reference material and friction ([`halfplane::reference`]).
 pub fn contact(profile: Profile) -> Contact {
     reference::contact(profile)
 }
@@ -12,7 +12,7 @@ pub fn point(normal: f64, shear: f64, bulk: f64) -> LoadPoint {
     LoadPoint::new("test", normal, shear, bulk).unwrap()
 }
 
-/// THEORY.md's checked cycle ([`halfplane::reference`]).
+/// The reference cycle ([`halfplane::reference`]).
 pub fn theory_cycle() -> Cycle {
     reference::cycle()
 }
