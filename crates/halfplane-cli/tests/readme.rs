@@ -69,9 +69,13 @@ fn command(line: &str) -> Option<(Vec<String>, Option<usize>)> {
         }
         None => (line, None),
     };
-    let args = ["cargo run --release -p halfplane-cli -- ", "cargo run -p halfplane-cli -- ", "halfplane "]
-        .iter()
-        .find_map(|p| line.strip_prefix(p))?;
+    let args = [
+        "cargo run --release -p halfplane-cli -- ",
+        "cargo run -p halfplane-cli -- ",
+        "halfplane ",
+    ]
+    .iter()
+    .find_map(|p| line.strip_prefix(p))?;
     Some((args.split_whitespace().map(String::from).collect(), head))
 }
 
