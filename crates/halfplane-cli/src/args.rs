@@ -1,5 +1,9 @@
 //! The raw command line, as clap parses it: one struct per command (and per figure), each
 //! resolved into a validated configuration by its command module (`commands::*`).
+//!
+//! The doc comments of the items below are the command's `--help` text, written for a terminal:
+//! there `[history]` names a case-file section, not a link.
+#![allow(rustdoc::broken_intra_doc_links)]
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
