@@ -28,6 +28,7 @@ pub enum Command {
     March(MarchArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
+    #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
     Plot(PlotCommand),
 }
 
