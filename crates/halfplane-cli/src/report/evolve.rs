@@ -1,6 +1,6 @@
 //! The `evolve` report: one row per point of each half-cycle.
 
-use super::{regime_name, state_name, Cell, Column, Shown, Style};
+use super::{regime_name, state_name, Cell, Column, Style};
 use crate::units::{Quantity, Units};
 use halfplane::evolution::{Evolution, EvolutionWarning};
 use serde::Serialize;
@@ -21,54 +21,26 @@ pub struct EvolveRow {
     state: &'static str,
 }
 
-/// A column of lengths (a, stick and asymptotic boundaries).
-const fn length(
-    key: &'static str,
-    title: &'static str,
-    width: usize,
-    get: fn(&EvolveRow) -> Cell,
-) -> Column<EvolveRow> {
-    Column {
-        key,
-        title,
-        quantity: Quantity::Length,
-        width,
-        style: Style::Fixed(6),
-        shown: Shown::Both,
-        get,
-    }
+/// A column of lengths (a, stick and asymptotic boundaries), to 6 decimals.
+const fn length(key: &'static str, width: usize, get: fn(&EvolveRow) -> Cell) -> Column<EvolveRow> {
+    Column::new(key, Quantity::Length, get).table(width, Style::Fixed(6))
 }
 
-/// A column of loads, printed to 4 decimals.
+/// A column of loads, to 4 decimals.
 const fn load(
     key: &'static str,
-    quantity: Quantity,
+    q: Quantity,
     width: usize,
     get: fn(&EvolveRow) -> Cell,
 ) -> Column<EvolveRow> {
-    Column {
-        key,
-        title: key,
-        quantity,
-        width,
-        style: Style::Fixed(4),
-        shown: Shown::Both,
-        get,
-    }
+    Column::new(key, q, get).table(width, Style::Fixed(4))
 }
 
 impl EvolveRow {
     /// The columns of every format, in order (the CSV header is their keys).
     pub const COLUMNS: [Column<Self>; 11] = [
-        Column {
-            key: "half",
-            title: "half",
-            quantity: Quantity::None,
-            width: 4,
-            style: Style::Fixed(0),
-            shown: Shown::Both,
-            get: |r| Cell::Int(r.half.into()),
-        },
+        Column::<Self>::new("half", Quantity::None, |r| Cell::Int(r.half.into()))
+            .table(4, Style::Fixed(0)),
         load("fraction", Quantity::None, 8, |r| Cell::Num(r.fraction)),
         load("normal", Quantity::ForcePerLength, 11, |r| {
             Cell::Num(r.normal)
@@ -77,26 +49,18 @@ impl EvolveRow {
             Cell::Num(r.shear)
         }),
         load("bulk", Quantity::Stress, 10, |r| Cell::Num(r.bulk)),
-        length("half_width", "a", 10, |r| Cell::Num(r.half_width)),
-        length("stick_left", "stick_left", 11, |r| Cell::Num(r.stick_left)),
-        length("stick_right", "stick_right", 11, |r| {
-            Cell::Num(r.stick_right)
-        }),
-        length("asymptotic_stick_left", "asym_left", 11, |r| {
+        length("half_width", 10, |r| Cell::Num(r.half_width)).titled("a"),
+        length("stick_left", 11, |r| Cell::Num(r.stick_left)),
+        length("stick_right", 11, |r| Cell::Num(r.stick_right)),
+        length("asymptotic_stick_left", 11, |r| {
             Cell::Num(r.asymptotic_stick_left)
-        }),
-        length("asymptotic_stick_right", "asym_right", 11, |r| {
+        })
+        .titled("asym_left"),
+        length("asymptotic_stick_right", 11, |r| {
             Cell::Num(r.asymptotic_stick_right)
-        }),
-        Column {
-            key: "state",
-            title: "state",
-            quantity: Quantity::None,
-            width: 0,
-            style: Style::Fixed(0),
-            shown: Shown::Both,
-            get: |r| Cell::Text(r.state.into()),
-        },
+        })
+        .titled("asym_right"),
+        Column::<Self>::new("state", Quantity::None, |r| Cell::Text(r.state.into())),
     ];
 }
 

@@ -27,26 +27,6 @@ pub struct MarchStepRow<'a> {
 
 type StepColumn<'a> = Column<MarchStepRow<'a>>;
 
-const fn step_column<'a>(
-    key: &'static str,
-    title: &'static str,
-    quantity: Quantity,
-    width: usize,
-    style: Style,
-    shown: Shown,
-    get: fn(&MarchStepRow<'a>) -> Cell,
-) -> StepColumn<'a> {
-    Column {
-        key,
-        title,
-        quantity,
-        width,
-        style,
-        shown,
-        get,
-    }
-}
-
 fn stick(r: &MarchStepRow, side: usize) -> Cell {
     r.largest_stick
         .map_or(Cell::Missing, |s| Cell::Num(s[side]))
@@ -56,124 +36,43 @@ impl<'a> MarchStepRow<'a> {
     /// The columns of the CSV and the summary table, in order. The stick columns hold the largest
     /// stick interval (empty in CSV, "-" in the table, when none), `stick_intervals` every
     /// interval as `left:right`, space-separated, and `runs` (table only) how many there are.
-    pub const COLUMNS: [StepColumn<'a>; 12] = [
-        step_column(
-            "step",
-            "step",
-            Quantity::None,
-            6,
-            Style::Fixed(0),
-            Shown::Both,
-            |r| Cell::Int(r.step),
-        ),
-        step_column(
-            "normal",
-            "normal",
-            Quantity::ForcePerLength,
-            11,
-            Style::Fixed(4),
-            Shown::Both,
-            |r| Cell::Num(r.normal),
-        ),
-        step_column(
-            "shear",
-            "shear",
-            Quantity::ForcePerLength,
-            11,
-            Style::Fixed(4),
-            Shown::Both,
-            |r| Cell::Num(r.shear),
-        ),
-        step_column(
-            "bulk",
-            "bulk",
-            Quantity::Stress,
-            10,
-            Style::Fixed(4),
-            Shown::Both,
-            |r| Cell::Num(r.bulk),
-        ),
-        step_column(
-            "half_width",
-            "a",
-            Quantity::Length,
-            10,
-            Style::Fixed(6),
-            Shown::Both,
-            |r| Cell::Num(r.half_width),
-        ),
-        step_column(
-            "stick_left",
-            "stick_left",
-            Quantity::Length,
-            11,
-            Style::Fixed(6),
-            Shown::Both,
-            |r| stick(r, 0),
-        ),
-        step_column(
-            "stick_right",
-            "stick_right",
-            Quantity::Length,
-            11,
-            Style::Fixed(6),
-            Shown::Both,
-            |r| stick(r, 1),
-        ),
-        step_column(
-            "stick_intervals",
-            "",
-            Quantity::Length,
-            0,
-            Style::Fixed(6),
-            Shown::Csv,
-            |r| {
-                Cell::Text(
-                    r.stick_intervals
-                        .iter()
-                        .map(|[l, r]| format!("{l}:{r}"))
-                        .collect::<Vec<_>>()
-                        .join(" "),
-                )
-            },
-        ),
-        step_column(
-            "energy_increment",
-            "",
-            Quantity::Energy,
-            0,
-            Style::Sci(6),
-            Shown::Csv,
-            |r| Cell::Num(r.energy_increment),
-        ),
-        step_column(
-            "energy",
-            "",
-            Quantity::Energy,
-            0,
-            Style::Sci(6),
-            Shown::Csv,
-            |r| Cell::Num(r.energy),
-        ),
-        step_column(
-            "passes",
-            "",
-            Quantity::None,
-            0,
-            Style::Fixed(0),
-            Shown::Csv,
-            |r| Cell::Int(r.passes),
-        ),
-        step_column(
-            "runs",
-            "runs",
-            Quantity::None,
-            5,
-            Style::Fixed(0),
-            Shown::Table,
-            |r| Cell::Int(r.stick_intervals.len()),
-        ),
-    ];
+    pub const COLUMNS: [StepColumn<'a>; 12] = {
+        use Quantity::{Energy, ForcePerLength, Length, Stress};
+        use Style::Fixed;
+        [
+            Column::<Self>::new("step", Quantity::None, |r| Cell::Int(r.step)).table(6, Fixed(0)),
+            Column::<Self>::new("normal", ForcePerLength, |r| Cell::Num(r.normal))
+                .table(11, Fixed(4)),
+            Column::<Self>::new("shear", ForcePerLength, |r| Cell::Num(r.shear))
+                .table(11, Fixed(4)),
+            Column::<Self>::new("bulk", Stress, |r| Cell::Num(r.bulk)).table(10, Fixed(4)),
+            Column::<Self>::new("half_width", Length, |r| Cell::Num(r.half_width))
+                .titled("a")
+                .table(10, Fixed(6)),
+            Column::<Self>::new("stick_left", Length, |r| stick(r, 0)).table(11, Fixed(6)),
+            Column::<Self>::new("stick_right", Length, |r| stick(r, 1)).table(11, Fixed(6)),
+            Column::<Self>::new("stick_intervals", Length, |r| {
+                let text: Vec<String> = r
+                    .stick_intervals
+                    .iter()
+                    .map(|[l, r]| format!("{l}:{r}"))
+                    .collect();
+                Cell::Text(text.join(" "))
+            })
+            .only(Shown::Csv),
+            Column::<Self>::new("energy_increment", Energy, |r| {
+                Cell::Num(r.energy_increment)
+            })
+            .only(Shown::Csv),
+            Column::<Self>::new("energy", Energy, |r| Cell::Num(r.energy)).only(Shown::Csv),
+            Column::<Self>::new("passes", Quantity::None, |r| Cell::Int(r.passes)).only(Shown::Csv),
+            Column::<Self>::new("runs", Quantity::None, |r| {
+                Cell::Int(r.stick_intervals.len())
+            })
+            .table(5, Fixed(0))
+            .only(Shown::Table),
+        ]
+    };
 }
 
 /// One cycle: a line of the cycle table and an element of the JSON `cycles`.
@@ -187,33 +86,16 @@ pub struct MarchCycleRow {
 impl MarchCycleRow {
     /// The columns of the cycle table.
     pub const COLUMNS: [Column<Self>; 3] = [
-        Column {
-            key: "index",
-            title: "cycle",
-            quantity: Quantity::None,
-            width: 6,
-            style: Style::Fixed(0),
-            shown: Shown::Table,
-            get: |r| Cell::Int(r.index),
-        },
-        Column {
-            key: "energy",
-            title: "energy",
-            quantity: Quantity::Energy,
-            width: 14,
-            style: Style::Sci(6),
-            shown: Shown::Table,
-            get: |r| Cell::Num(r.energy),
-        },
-        Column {
-            key: "max_slip_amplitude",
-            title: "max slip amplitude",
-            quantity: Quantity::Length,
-            width: 20,
-            style: Style::Sci(6),
-            shown: Shown::Table,
-            get: |r| Cell::Num(r.max_slip_amplitude),
-        },
+        Column::<Self>::new("index", Quantity::None, |r| Cell::Int(r.index))
+            .titled("cycle")
+            .table(6, Style::Fixed(0)),
+        Column::<Self>::new("energy", Quantity::Energy, |r| Cell::Num(r.energy))
+            .table(14, Style::Sci(6)),
+        Column::<Self>::new("max_slip_amplitude", Quantity::Length, |r| {
+            Cell::Num(r.max_slip_amplitude)
+        })
+        .titled("max slip amplitude")
+        .table(20, Style::Sci(6)),
     ];
 }
 

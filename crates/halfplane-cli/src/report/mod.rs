@@ -63,6 +63,38 @@ pub struct Column<R> {
 }
 
 impl<R> Column<R> {
+    /// A column in the table and the CSV, titled by its key, as wide as its values.
+    pub const fn new(key: &'static str, quantity: Quantity, get: fn(&R) -> Cell) -> Self {
+        Self {
+            key,
+            title: key,
+            quantity,
+            width: 0,
+            style: Style::Fixed(0),
+            shown: Shown::Both,
+            get,
+        }
+    }
+
+    /// The table heading, when not the key.
+    pub const fn titled(mut self, title: &'static str) -> Self {
+        self.title = title;
+        self
+    }
+
+    /// The table width and number format.
+    pub const fn table(mut self, width: usize, style: Style) -> Self {
+        self.width = width;
+        self.style = style;
+        self
+    }
+
+    /// Shown in one output only.
+    pub const fn only(mut self, shown: Shown) -> Self {
+        self.shown = shown;
+        self
+    }
+
     fn in_csv(&self) -> bool {
         self.shown != Shown::Table
     }
@@ -166,42 +198,13 @@ pub(crate) mod tests {
     struct Row(usize, f64, Option<f64>, &'static str);
 
     const COLUMNS: [Column<Row>; 4] = [
-        Column {
-            key: "n",
-            title: "n",
-            quantity: Quantity::None,
-            width: 3,
-            style: Style::Fixed(0),
-            shown: Shown::Both,
-            get: |r| Cell::Int(r.0),
-        },
-        Column {
-            key: "x",
-            title: "x",
-            quantity: Quantity::Length,
-            width: 8,
-            style: Style::Fixed(3),
-            shown: Shown::Both,
-            get: |r| Cell::Num(r.1),
-        },
-        Column {
-            key: "y",
-            title: "y",
-            quantity: Quantity::Stress,
-            width: 8,
-            style: Style::Sci(1),
-            shown: Shown::Csv,
-            get: |r| r.2.map_or(Cell::Missing, Cell::Num),
-        },
-        Column {
-            key: "name",
-            title: "name",
-            quantity: Quantity::None,
-            width: 0,
-            style: Style::Fixed(0),
-            shown: Shown::Both,
-            get: |r| Cell::Text(r.3.into()),
-        },
+        Column::<Row>::new("n", Quantity::None, |r| Cell::Int(r.0)).table(3, Style::Fixed(0)),
+        Column::<Row>::new("x", Quantity::Length, |r| Cell::Num(r.1)).table(8, Style::Fixed(3)),
+        Column::<Row>::new("y", Quantity::Stress, |r| {
+            r.2.map_or(Cell::Missing, Cell::Num)
+        })
+        .only(Shown::Csv),
+        Column::<Row>::new("name", Quantity::None, |r| Cell::Text(r.3.into())),
     ];
 
     #[test]
