@@ -93,6 +93,7 @@ struct RawCase {
     cycle: Option<RawCycle>,
     history: Option<RawHistory>,
     solver: Option<RawSolver>,
+    units: Option<crate::units::RawUnits>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -172,6 +173,8 @@ pub struct Case {
     pub cycle: Option<Cycle>,
     history: Option<History>,
     pub solver: MarchOptions,
+    /// The unit names of `[units]` (default N, mm, MPa), for labels only.
+    pub units: crate::units::Units,
 }
 
 impl Case {
@@ -302,6 +305,7 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         cycle,
         history,
         solver,
+        units: crate::units::Units::resolve(raw.units)?,
     })
 }
 

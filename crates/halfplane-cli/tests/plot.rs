@@ -186,7 +186,11 @@ fn bad_plot_requests_are_clear_errors() {
     let cases: [(&[&str], &[&str]); 6] = [
         (
             &["plot", "pie-chart", &hertz, "-o", svg],
-            &["invalid value 'pie-chart'", "load-space"],
+            &[
+                "unrecognized subcommand 'pie-chart'",
+                "load-space",
+                "march-zones",
+            ],
         ),
         (
             &["plot", "load-space", &hertz, "-o", "/nonexistent-dir/x.svg"],

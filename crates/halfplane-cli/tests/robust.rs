@@ -172,9 +172,10 @@ fn run_into_closed_pipe(args: &[&str]) -> Output {
 /// Every output route of every command.
 fn output_routes() -> Vec<Vec<String>> {
     let (hertz, cycle) = (example("hertz.toml"), example("march-cycle.toml"));
-    let args: [&[&str]; 8] = [
+    let args: [&[&str]; 9] = [
         &["steady", &hertz],
         &["steady", &hertz, "--json"],
+        &["steady", &hertz, "--format", "csv"],
         &["evolve", &hertz],
         &["evolve", &hertz, "--csv"],
         &["evolve", &hertz, "--json"],

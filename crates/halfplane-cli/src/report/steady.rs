@@ -1,7 +1,9 @@
-//! Reports for `steady` and `evolve`: a readable table, JSON and CSV, built from library results.
+//! The `steady` report: one nested record. The JSON is its serialization; the CSV is one row of
+//! its numbers under dotted names ([`SteadyReport::COLUMNS`]); the table shows it in words.
 
+use super::regime_name;
+use crate::units::{Quantity, Units};
 use halfplane::asymptotic::AsymptoticSteady;
-use halfplane::evolution::{Evolution, EvolutionWarning, PointState};
 use halfplane::steady::{GivenPoint, Regime, SteadyState};
 use halfplane::{Contact, Shape, StickZone};
 use serde::Serialize;
@@ -21,6 +23,7 @@ pub struct SteadyReport {
     stick_zone: Option<ZoneReport>,
     slip_zones: Option<Edges<Pair<f64>>>,
     asymptotic: Option<AsymptoticReport>,
+    units: Units,
 }
 
 #[derive(Serialize)]
@@ -143,14 +146,6 @@ fn row(o: &mut String, label: &str, a: f64, b: f64, note: &str) {
     let _ = writeln!(o, "{label:<15}{a:>14.6} {b:>14.6}{note}");
 }
 
-fn regime_name(r: &Regime) -> &'static str {
-    match r {
-        Regime::GrossSliding { .. } => "gross-sliding",
-        Regime::FullStick => "full-stick",
-        Regime::PartialSlip => "partial-slip",
-    }
-}
-
 fn profile_report(contact: &Contact) -> ProfileReport {
     let mut r = ProfileReport {
         kind: "",
@@ -186,6 +181,7 @@ impl SteadyReport {
         contact: &Contact,
         steady: &SteadyState,
         asymptotic: Option<&AsymptoticSteady>,
+        units: &Units,
     ) -> anyhow::Result<Self> {
         let (first, second) = steady.cycle.as_given();
         let point = |p: halfplane::LoadPoint| PointReport {
@@ -271,6 +267,7 @@ impl SteadyReport {
                 },
             }),
             asymptotic,
+            units: units.clone(),
         })
     }
 
@@ -278,15 +275,20 @@ impl SteadyReport {
     pub fn table(&self, steady: &SteadyState) -> String {
         let mut o = String::new();
         let p = &self.points;
+        // The unit after a row's numbers, and inside a line.
+        let tail = |q: Quantity| format!("   {}", self.units.of(q));
+        let len = &self.units.length;
         let _ = writeln!(
             o,
-            "profile      {}   A = {:.6e}   f = {}",
-            self.profile.kind, self.compliance, self.friction
+            "profile      {}   A = {:.6e} 1/{}   f = {}",
+            self.profile.kind, self.compliance, self.units.stress, self.friction
         );
         let _ = writeln!(o, "               {:>14} {:>14}", "point1", "point2");
-        row(&mut o, "normal P", p.first.normal, p.second.normal, "");
-        row(&mut o, "shear Q", p.first.shear, p.second.shear, "");
-        row(&mut o, "bulk sigma", p.first.bulk, p.second.bulk, "");
+        let force = tail(Quantity::ForcePerLength);
+        row(&mut o, "normal P", p.first.normal, p.second.normal, &force);
+        row(&mut o, "shear Q", p.first.shear, p.second.shear, &force);
+        let stress = tail(Quantity::Stress);
+        row(&mut o, "bulk sigma", p.first.bulk, p.second.bulk, &stress);
         row(
             &mut o,
             "|Q|/P",
@@ -299,14 +301,14 @@ impl SteadyReport {
             "half-width a",
             self.contact.half_width_1,
             self.contact.half_width_2,
-            "",
+            &tail(Quantity::Length),
         );
         row(
             &mut o,
             "K_N",
             self.contact.normal_intensity_1,
             self.contact.normal_intensity_2,
-            "",
+            &tail(Quantity::Intensity),
         );
         let ratio = self
             .criteria
@@ -335,14 +337,15 @@ impl SteadyReport {
         if let Some(z) = &self.stick_zone {
             let _ = writeln!(
                 o,
-                "stick zone   [-m, n] = [{:.6}, {:.6}]   d = {:.6}   e = {:.6}",
+                "stick zone   [-m, n] = [{:.6}, {:.6}] {len}   d = {:.6} {len}   e = {:.6} {len}",
                 z.left, z.right, z.half_width, z.eccentricity
             );
         }
         if let Some(s) = &self.slip_zones {
             let _ = writeln!(o, "slip zones     {:>14} {:>14}", "at point1", "at point2");
-            row(&mut o, "  left", s.left.first, s.left.second, "");
-            row(&mut o, "  right", s.right.first, s.right.second, "");
+            let length = tail(Quantity::Length);
+            row(&mut o, "  left", s.left.first, s.left.second, &length);
+            row(&mut o, "  right", s.right.first, s.right.second, &length);
         }
         if let Some(a) = &self.asymptotic {
             let _ = writeln!(o);
@@ -352,37 +355,37 @@ impl SteadyReport {
                 "  K_T left",
                 a.edges.first.shear_intensity_left,
                 a.edges.second.shear_intensity_left,
-                "",
+                &tail(Quantity::Intensity),
             );
             row(
                 &mut o,
                 "  K_T right",
                 a.edges.first.shear_intensity_right,
                 a.edges.second.shear_intensity_right,
-                "",
+                &tail(Quantity::Intensity),
             );
             row(
                 &mut o,
                 "  S left",
                 a.edges.first.equivalent_shear_left,
                 a.edges.second.equivalent_shear_left,
-                "",
+                &force,
             );
             row(
                 &mut o,
                 "  S right",
                 a.edges.first.equivalent_shear_right,
                 a.edges.second.equivalent_shear_right,
-                "",
+                &force,
             );
             let _ = writeln!(
                 o,
-                "  P_K          left {:.6}   right {:.6}",
+                "  P_K          left {:.6}   right {:.6}{force}",
                 a.stick_load.left, a.stick_load.right
             );
             let _ = writeln!(
                 o,
-                "  stick zone   [{:.6}, {:.6}]   vs exact: {:+.3}% left, {:+.3}% right",
+                "  stick zone   [{:.6}, {:.6}] {len}   vs exact: {:+.3}% left, {:+.3}% right",
                 a.stick_zone.left,
                 a.stick_zone.right,
                 100.0 * a.stick_zone.relative_difference_left,
@@ -392,7 +395,7 @@ impl SteadyReport {
                 for (point, c) in [("point1", &e.first), ("point2", &e.second)] {
                     let _ = writeln!(
                         o,
-                        "  slip {name:<5} at {point}: w = {:.6}   exact {:.6}   ({:+.3}%)",
+                        "  slip {name:<5} at {point}: w = {:.6} {len}   exact {:.6} {len}   ({:+.3}%)",
                         c.estimate,
                         c.exact,
                         100.0 * c.relative_difference
@@ -404,341 +407,106 @@ impl SteadyReport {
     }
 }
 
-fn state_name(s: &PointState) -> &'static str {
-    match s {
-        PointState::FullStick => "full-stick",
-        PointState::PartialSlip => "partial-slip",
-        PointState::OneEdgeSlip { .. } => "one-edge-slip",
+impl SteadyReport {
+    /// The one-row CSV's columns: every number and name of the JSON under its dotted path,
+    /// always all of them and in this order, so rows of different cases
+    /// line up; a value the case does not have (a profile parameter of another kind, the stick
+    /// zone when sliding, the asymptotics outside partial slip) is an empty cell. `profile.kinks`
+    /// lists the kinks space-separated.
+    pub const COLUMNS: [&'static str; 64] = [
+        "regime",
+        "profile.kind",
+        "profile.radius",
+        "profile.flat_half_width",
+        "profile.coefficient",
+        "profile.exponent",
+        "profile.rows",
+        "profile.kinks",
+        "compliance",
+        "friction",
+        "points.at_point1.normal",
+        "points.at_point1.shear",
+        "points.at_point1.bulk",
+        "points.at_point2.normal",
+        "points.at_point2.shear",
+        "points.at_point2.bulk",
+        "smaller_shear_point",
+        "criteria.shear_ratio_1",
+        "criteria.shear_ratio_2",
+        "criteria.full_stick_ratio",
+        "criteria.shear_range",
+        "criteria.bulk_term",
+        "criteria.friction",
+        "contact.half_width_1",
+        "contact.half_width_2",
+        "contact.normal_intensity_1",
+        "contact.normal_intensity_2",
+        "stick_zone.left",
+        "stick_zone.right",
+        "stick_zone.half_width",
+        "stick_zone.eccentricity",
+        "slip_zones.left.at_point1",
+        "slip_zones.left.at_point2",
+        "slip_zones.right.at_point1",
+        "slip_zones.right.at_point2",
+        "asymptotic.stick_zone.left",
+        "asymptotic.stick_zone.right",
+        "asymptotic.stick_zone.relative_difference_left",
+        "asymptotic.stick_zone.relative_difference_right",
+        "asymptotic.stick_load.left",
+        "asymptotic.stick_load.right",
+        "asymptotic.edges.at_point1.shear_intensity_left",
+        "asymptotic.edges.at_point1.shear_intensity_right",
+        "asymptotic.edges.at_point1.equivalent_shear_left",
+        "asymptotic.edges.at_point1.equivalent_shear_right",
+        "asymptotic.edges.at_point2.shear_intensity_left",
+        "asymptotic.edges.at_point2.shear_intensity_right",
+        "asymptotic.edges.at_point2.equivalent_shear_left",
+        "asymptotic.edges.at_point2.equivalent_shear_right",
+        "asymptotic.slip_zones.left.at_point1.estimate",
+        "asymptotic.slip_zones.left.at_point1.exact",
+        "asymptotic.slip_zones.left.at_point1.relative_difference",
+        "asymptotic.slip_zones.left.at_point2.estimate",
+        "asymptotic.slip_zones.left.at_point2.exact",
+        "asymptotic.slip_zones.left.at_point2.relative_difference",
+        "asymptotic.slip_zones.right.at_point1.estimate",
+        "asymptotic.slip_zones.right.at_point1.exact",
+        "asymptotic.slip_zones.right.at_point1.relative_difference",
+        "asymptotic.slip_zones.right.at_point2.estimate",
+        "asymptotic.slip_zones.right.at_point2.exact",
+        "asymptotic.slip_zones.right.at_point2.relative_difference",
+        "units.force",
+        "units.length",
+        "units.stress",
+    ];
+
+    /// One JSON object.
+    pub fn json(&self) -> serde_json::Result<String> {
+        serde_json::to_string_pretty(self)
     }
-}
 
-/// Warnings in words, for stderr or the table.
-pub fn warnings(ev: &Evolution) -> Vec<String> {
-    ev.warnings
-        .iter()
-        .map(|w| match w {
-            EvolutionWarning::NonMonotoneSlip { half, edge, fraction } => format!(
-                "warning: half {half}: the {} stick boundary moves outwards at fraction {fraction:.4}; slip zones do not grow monotonically, so the exact partial-path result does not hold there (use `halfplane march`)",
-                edge.name()
-            ),
-            EvolutionWarning::OneEdgeSlip { half, count } => format!(
-                "warning: half {half}: {count} point(s) slip at one edge only; their slipping boundary is from the two-edge relation and only approximate (use `halfplane march` for exact values)"
-            ),
-        })
-        .collect()
-}
-
-pub const EVOLVE_COLUMNS: &str = "half,fraction,normal,shear,bulk,half_width,stick_left,stick_right,asymptotic_stick_left,asymptotic_stick_right,state";
-
-/// CSV, one row per point.
-pub fn evolve_csv(ev: &Evolution) -> String {
-    let mut o = String::from(EVOLVE_COLUMNS);
-    o.push('\n');
-    for p in &ev.points {
-        let _ = writeln!(
-            o,
-            "{},{},{},{},{},{},{},{},{},{},{}",
-            p.half,
-            p.fraction,
-            p.load.normal(),
-            p.load.shear(),
-            p.load.bulk(),
-            p.half_width,
-            p.stick_zone.left,
-            p.stick_zone.right,
-            p.asymptotic_stick_zone.left,
-            p.asymptotic_stick_zone.right,
-            state_name(&p.state)
-        );
-    }
-    o
-}
-
-/// A readable table.
-pub fn evolve_table(ev: &Evolution) -> String {
-    let mut o = String::new();
-    let _ = writeln!(o, "regime {}", regime_name(&ev.regime));
-    let _ = writeln!(
-        o,
-        "{:>4} {:>8} {:>11} {:>11} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11}  state",
-        "half",
-        "fraction",
-        "normal",
-        "shear",
-        "bulk",
-        "a",
-        "stick_left",
-        "stick_right",
-        "asym_left",
-        "asym_right"
-    );
-    for p in &ev.points {
-        let _ = writeln!(
-            o,
-            "{:>4} {:>8.4} {:>11.4} {:>11.4} {:>10.4} {:>10.6} {:>11.6} {:>11.6} {:>11.6} {:>11.6}  {}",
-            p.half,
-            p.fraction,
-            p.load.normal(),
-            p.load.shear(),
-            p.load.bulk(),
-            p.half_width,
-            p.stick_zone.left,
-            p.stick_zone.right,
-            p.asymptotic_stick_zone.left,
-            p.asymptotic_stick_zone.right,
-            state_name(&p.state)
-        );
-    }
-    o
-}
-
-#[derive(Serialize)]
-struct EvolveRow {
-    half: u8,
-    fraction: f64,
-    normal: f64,
-    shear: f64,
-    bulk: f64,
-    half_width: f64,
-    stick_left: f64,
-    stick_right: f64,
-    asymptotic_stick_left: f64,
-    asymptotic_stick_right: f64,
-    state: &'static str,
-}
-
-#[derive(Serialize)]
-struct EvolveReport {
-    regime: &'static str,
-    points: Vec<EvolveRow>,
-    warnings: Vec<String>,
-}
-
-/// One JSON object.
-pub fn evolve_json(ev: &Evolution) -> serde_json::Result<String> {
-    let report = EvolveReport {
-        regime: regime_name(&ev.regime),
-        points: ev
-            .points
-            .iter()
-            .map(|p| EvolveRow {
-                half: p.half,
-                fraction: p.fraction,
-                normal: p.load.normal(),
-                shear: p.load.shear(),
-                bulk: p.load.bulk(),
-                half_width: p.half_width,
-                stick_left: p.stick_zone.left,
-                stick_right: p.stick_zone.right,
-                asymptotic_stick_left: p.asymptotic_stick_zone.left,
-                asymptotic_stick_right: p.asymptotic_stick_zone.right,
-                state: state_name(&p.state),
-            })
-            .collect(),
-        warnings: warnings(ev),
-    };
-    serde_json::to_string_pretty(&report)
-}
-
-pub const MARCH_COLUMNS: &str = "step,normal,shear,bulk,half_width,stick_left,stick_right,stick_intervals,energy_increment,energy,passes";
-
-fn intervals_text(steps: &[[f64; 2]]) -> String {
-    steps
-        .iter()
-        .map(|[l, r]| format!("{l}:{r}"))
-        .collect::<Vec<_>>()
-        .join(" ")
-}
-
-/// One CSV row per increment; the stick columns hold the largest stick interval (empty when
-/// none) and `stick_intervals` every interval as `left:right`, space-separated.
-pub fn march_csv(result: &halfplane::march::MarchResult) -> String {
-    let mut o = String::from(MARCH_COLUMNS);
-    o.push('\n');
-    for s in &result.steps {
-        let (l, r) = s
-            .largest_stick()
-            .map_or((String::new(), String::new()), |[l, r]| {
-                (l.to_string(), r.to_string())
-            });
-        let _ = writeln!(
-            o,
-            "{},{},{},{},{},{l},{r},{},{},{},{}",
-            s.step,
-            s.load.normal(),
-            s.load.shear(),
-            s.load.bulk(),
-            s.half_width,
-            intervals_text(&s.stick_intervals),
-            s.energy_increment,
-            s.energy,
-            s.passes
-        );
-    }
-    o
-}
-
-#[derive(Serialize)]
-struct MarchStepRow<'a> {
-    step: usize,
-    normal: f64,
-    shear: f64,
-    bulk: f64,
-    half_width: f64,
-    stick_intervals: &'a [[f64; 2]],
-    largest_stick: Option<[f64; 2]>,
-    energy_increment: f64,
-    energy: f64,
-}
-
-#[derive(Serialize)]
-struct MarchCycleRow {
-    index: usize,
-    energy: f64,
-    max_slip_amplitude: f64,
-}
-
-#[derive(Serialize)]
-struct MarchReport<'a> {
-    cells: usize,
-    cell_width: f64,
-    steps: Vec<MarchStepRow<'a>>,
-    cycles: Vec<MarchCycleRow>,
-    shakedown_cycle: Option<usize>,
-}
-
-/// One JSON object.
-pub fn march_json(result: &halfplane::march::MarchResult) -> serde_json::Result<String> {
-    let report = MarchReport {
-        cells: result.x.len(),
-        // A march has at least 8 cells (the solver rejects fewer).
-        cell_width: result.x[1] - result.x[0],
-        steps: result
-            .steps
-            .iter()
-            .map(|s| MarchStepRow {
-                step: s.step,
-                normal: s.load.normal(),
-                shear: s.load.shear(),
-                bulk: s.load.bulk(),
-                half_width: s.half_width,
-                stick_intervals: &s.stick_intervals,
-                largest_stick: s.largest_stick(),
-                energy_increment: s.energy_increment,
-                energy: s.energy,
-            })
-            .collect(),
-        cycles: result
-            .cycles
-            .iter()
-            .map(|c| MarchCycleRow {
-                index: c.index,
-                energy: c.energy,
-                max_slip_amplitude: c.max_slip_amplitude(),
-            })
-            .collect(),
-        shakedown_cycle: result.shakedown_cycle,
-    };
-    serde_json::to_string_pretty(&report)
-}
-
-/// A readable summary.
-pub fn march_table(
-    result: &halfplane::march::MarchResult,
-    history: &halfplane::history::History,
-    tolerance: f64,
-) -> String {
-    let mut o = String::new();
-    // A march has at least 8 cells (the solver rejects fewer), so these indices exist.
-    let n = result.x.len();
-    let w = result.x[1] - result.x[0];
-    let span = result.x[n - 1] + 0.5 * w;
-    let _ = writeln!(
-        o,
-        "grid         {n} cells over [-{span:.6}, {span:.6}], cell width {w:.6}"
-    );
-    match history.cycles() {
-        Some(c) => {
-            let _ = writeln!(
-                o,
-                "history      {} increments: {} of ramp, {} cycles of {}",
-                history.loads().len(),
-                c.first_step(),
-                c.count(),
-                c.steps_per_cycle()
-            );
-        }
-        None => {
-            let _ = writeln!(
-                o,
-                "history      {} increments from the file",
-                history.loads().len()
-            );
-        }
-    }
-    if let Some(last) = result.steps.last() {
-        let _ = writeln!(o, "energy       {:.6e} dissipated in all", last.energy);
-    }
-    if !result.cycles.is_empty() {
-        let _ = writeln!(
-            o,
-            "\n{:>6} {:>14} {:>20}",
-            "cycle", "energy", "max slip amplitude"
-        );
-        for c in &result.cycles {
-            let _ = writeln!(
-                o,
-                "{:>6} {:>14.6e} {:>20.6e}",
-                c.index,
-                c.energy,
-                c.max_slip_amplitude()
-            );
-        }
-        let _ = match result.shakedown_cycle {
-            Some(k) => writeln!(
-                o,
-                "steady cycle: from cycle {k} (cycle {} repeats it within {tolerance})",
-                k + 1
-            ),
-            None => writeln!(
-                o,
-                "steady cycle: not reached (no two consecutive cycles agree within {tolerance})"
-            ),
+    /// A header of [`Self::COLUMNS`] and one row: each the JSON value at that path, numbers as
+    /// Rust writes them (as the other commands' CSV), empty when absent or null.
+    pub fn csv(&self) -> serde_json::Result<String> {
+        let v = serde_json::to_value(self)?;
+        let cell = |path: &str| -> String {
+            let found = path.split('.').try_fold(&v, |v, key| v.get(key));
+            match found {
+                Some(serde_json::Value::Number(n)) => match (n.as_u64(), n.as_f64()) {
+                    (Some(i), _) => i.to_string(),
+                    (None, Some(x)) => x.to_string(),
+                    (None, None) => n.to_string(),
+                },
+                Some(serde_json::Value::String(s)) => s.clone(),
+                Some(serde_json::Value::Array(a)) => a
+                    .iter()
+                    .map(|x| x.as_f64().map_or_else(String::new, |x| x.to_string()))
+                    .collect::<Vec<_>>()
+                    .join(" "),
+                _ => String::new(),
+            }
         };
+        let row: Vec<String> = Self::COLUMNS.iter().map(|c| cell(c)).collect();
+        Ok(format!("{}\n{}\n", Self::COLUMNS.join(","), row.join(",")))
     }
-    let _ = writeln!(
-        o,
-        "\n{:>6} {:>11} {:>11} {:>10} {:>10} {:>11} {:>11} {:>5}",
-        "step", "normal", "shear", "bulk", "a", "stick_left", "stick_right", "runs"
-    );
-    // With cycles, the ramp end and the end of every quarter of the last cycle (five steps, so
-    // the search below is constant time); a file history lists every step. (Searching a list of
-    // every step once per step made this quadratic: 1.1 s for 100,000 increments.)
-    let ends: Option<Vec<usize>> = history.cycles().map(|c| {
-        let last = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
-        let mut v = vec![c.first_step()];
-        v.extend((1..=4).map(|q| last + q * c.steps_per_cycle() / 4));
-        v
-    });
-    let listed = |step: usize| ends.as_ref().is_none_or(|e| e.contains(&step));
-    for s in result.steps.iter().filter(|s| listed(s.step)) {
-        let (l, r) = s
-            .largest_stick()
-            .map_or(("-".into(), "-".into()), |[l, r]| {
-                (format!("{l:.6}"), format!("{r:.6}"))
-            });
-        let _ = writeln!(
-            o,
-            "{:>6} {:>11.4} {:>11.4} {:>10.4} {:>10.6} {:>11} {:>11} {:>5}",
-            s.step,
-            s.load.normal(),
-            s.load.shear(),
-            s.load.bulk(),
-            s.half_width,
-            l,
-            r,
-            s.stick_intervals.len()
-        );
-    }
-    o
 }

@@ -1,0 +1,36 @@
+//! The commands, one module each: a validated configuration resolved from the raw arguments
+//! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
+
+pub mod evolve;
+pub mod march;
+pub mod plot;
+pub mod steady;
+
+use crate::args::Command;
+use anyhow::Result;
+
+/// Resolves the command's configuration and runs it.
+pub fn run(command: &Command) -> Result<()> {
+    match command {
+        Command::Steady(a) => steady::run(&steady::SteadyConfig::resolve(a)?),
+        Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
+        Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
+        Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
+    }
+}
+
+/// What to do next when a load case is outside the steady-state analysis, chosen by the library's
+/// error variant (never by its text).
+pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
+    use halfplane::Error;
+    match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
+        Error::SlipReversesInHalf { .. }
+        | Error::StickZoneOutsideContact { .. }
+        | Error::SlipReversal { .. } => Some(
+            "this cycle is outside the steady-state analysis; `halfplane march` (numerical time \
+             marching) has no such restriction: give the case a [history] section with \
+             kind = \"cycle\"",
+        ),
+        _ => None,
+    }
+}

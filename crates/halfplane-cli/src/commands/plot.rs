@@ -1,0 +1,206 @@
+//! `halfplane plot FIGURE`: one figure, each with its own options, as SVG or PNG.
+
+use crate::args::{FigureArgs, PlotCommand};
+use crate::case::Case;
+use crate::output::note;
+use anyhow::{bail, Result};
+use halfplane::history::History;
+use halfplane::march::{self, MarchOptions};
+use halfplane::{Contact, Cycle};
+use halfplane_plot::{FieldRecorder, MarchedCycle, SlipMap, Units};
+use std::path::PathBuf;
+
+/// The most increments `march-fields` draws: each keeps four fields of every cell, and a figure
+/// of more curves than this is unreadable anyway.
+pub const MAX_STEPS: usize = 20;
+
+/// What `plot` draws, and where.
+#[derive(Debug, Clone)]
+pub struct PlotConfig {
+    pub contact: Contact,
+    /// The axes' unit names, from the case's `[units]`.
+    pub units: Units,
+    /// The output file (its name ending says SVG or PNG; the plot crate checks it).
+    pub output: PathBuf,
+    pub figure: FigureConfig,
+}
+
+/// The figure with what it alone needs.
+#[derive(Debug, Clone)]
+pub enum FigureConfig {
+    LoadSpace {
+        cycle: Cycle,
+    },
+    SlipMap(SlipMap),
+    Evolution {
+        cycle: Cycle,
+        points: usize,
+        /// `--march`: the history to march and its solver settings.
+        overlay: Option<(History, MarchOptions)>,
+    },
+    MarchFields {
+        history: History,
+        options: MarchOptions,
+        /// Increments to draw: 1 to the history's length, at most [`MAX_STEPS`].
+        steps: Vec<usize>,
+    },
+    MarchZones {
+        history: History,
+        options: MarchOptions,
+    },
+}
+
+impl PlotConfig {
+    /// Reads the case and checks the figure's options against it.
+    pub fn resolve(command: &PlotCommand) -> Result<Self> {
+        let (common, case, figure) = match command {
+            PlotCommand::LoadSpace(a) => {
+                let case = load(a)?;
+                let cycle = case.cycle()?;
+                (a, case, FigureConfig::LoadSpace { cycle })
+            }
+            PlotCommand::SlipMap(a) => {
+                let case = load(&a.figure)?;
+                let p1 = a.normal.unwrap_or_else(|| {
+                    case.cycle
+                        .map_or(1000.0, |c| c.low().normal().min(c.high().normal()))
+                });
+                if !(p1.is_finite() && p1 > 0.0) {
+                    bail!("invalid --normal = {p1}: must be a finite number > 0");
+                }
+                let map = SlipMap {
+                    normal: p1,
+                    frictions: a.frictions.clone(),
+                    ratios: a.ratios.clone(),
+                    tensions: a.tensions.clone(),
+                    samples: 60,
+                };
+                (&a.figure, case, FigureConfig::SlipMap(map))
+            }
+            PlotCommand::Evolution(a) => {
+                let case = load(&a.figure)?;
+                let cycle = case.cycle()?;
+                let points = super::evolve::points(a.points)?;
+                let overlay = match a.march {
+                    true => Some((case.history()?, case.solver_with_cells(a.cells)?)),
+                    false => None,
+                };
+                let figure = FigureConfig::Evolution {
+                    cycle,
+                    points,
+                    overlay,
+                };
+                (&a.figure, case, figure)
+            }
+            PlotCommand::MarchFields(a) => {
+                let case = load(&a.figure)?;
+                let history = case.history()?;
+                let options = case.solver_with_cells(a.cells)?;
+                let steps = steps(&history, &a.steps)?;
+                let figure = FigureConfig::MarchFields {
+                    history,
+                    options,
+                    steps,
+                };
+                (&a.figure, case, figure)
+            }
+            PlotCommand::MarchZones(a) => {
+                let case = load(&a.figure)?;
+                let history = case.history()?;
+                let options = case.solver_with_cells(a.cells)?;
+                (
+                    &a.figure,
+                    case,
+                    FigureConfig::MarchZones { history, options },
+                )
+            }
+        };
+        Ok(Self {
+            contact: case.contact,
+            units: case.units.plot(),
+            output: common.output.clone(),
+            figure,
+        })
+    }
+}
+
+fn load(args: &FigureArgs) -> Result<Case> {
+    crate::case::load(&args.case)
+}
+
+/// The increments `march-fields` draws: as given, or 1/4, 1/2, 3/4 and the end of the last cycle
+/// (the last increment for a history from a file).
+fn steps(history: &History, given: &[usize]) -> Result<Vec<usize>> {
+    let n = history.loads().len();
+    let wanted = if given.is_empty() {
+        match history.cycles() {
+            Some(c) => {
+                let last = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
+                (1..=4)
+                    .map(|q| last + q * c.steps_per_cycle() / 4)
+                    .collect()
+            }
+            None => vec![n],
+        }
+    } else {
+        given.to_vec()
+    };
+    if wanted.len() > MAX_STEPS {
+        bail!(
+            "invalid --steps: {} values given, at most {MAX_STEPS} can be drawn",
+            wanted.len()
+        );
+    }
+    if let Some(bad) = wanted.iter().find(|&&k| k == 0 || k > n) {
+        bail!("invalid --steps value {bad}: the history has increments 1 to {n}");
+    }
+    Ok(wanted)
+}
+
+/// Computes the figure, writes it and says where on stderr.
+pub fn run(config: &PlotConfig) -> Result<()> {
+    let (contact, units) = (&config.contact, &config.units);
+    let fig = match &config.figure {
+        FigureConfig::LoadSpace { cycle } => {
+            halfplane_plot::load_space_figure(contact, cycle, units)?
+        }
+        FigureConfig::SlipMap(map) => halfplane_plot::slip_map_figure(contact, map, units)?,
+        FigureConfig::Evolution {
+            cycle,
+            points,
+            overlay,
+        } => {
+            let ev = super::evolve::evolve(contact, cycle, *points)?;
+            let marched = match overlay {
+                Some((history, options)) => {
+                    let result = march::march(contact, history, options, |_, _| {})?;
+                    Some(MarchedCycle::last_cycle(&result, history)?)
+                }
+                None => None,
+            };
+            halfplane_plot::evolution_figure(&ev, marched.as_ref(), units)
+        }
+        FigureConfig::MarchFields {
+            history,
+            options,
+            steps,
+        } => {
+            let mut recorder = FieldRecorder {
+                steps: steps.clone(),
+                kept: Vec::new(),
+            };
+            let f = contact.friction.value();
+            march::march(contact, history, options, |r, fields| {
+                recorder.observe(r.step, fields, f)
+            })?;
+            halfplane_plot::march_fields_figure(&recorder.kept, units)
+        }
+        FigureConfig::MarchZones { history, options } => {
+            let result = march::march(contact, history, options, |_, _| {})?;
+            halfplane_plot::march_zones_figure(&result, units)
+        }
+    };
+    halfplane_plot::write(&fig, &config.output)?;
+    note(&format!("wrote {}", config.output.display()));
+    Ok(())
+}
