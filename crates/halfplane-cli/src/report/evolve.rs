@@ -1,6 +1,6 @@
 //! The `evolve` report: one row per point of each half-cycle.
 
-use super::{regime_name, state_name, Cell, Column, Style};
+use super::{Cell, Column, Style};
 use crate::units::{Quantity, Units};
 use halfplane::evolution::{Evolution, EvolutionWarning};
 use serde::Serialize;
@@ -76,7 +76,7 @@ pub struct EvolveReport {
 impl EvolveReport {
     pub fn new(ev: &Evolution, units: &Units) -> Self {
         Self {
-            regime: regime_name(&ev.regime),
+            regime: ev.regime.as_str(),
             points: ev
                 .points
                 .iter()
@@ -91,7 +91,7 @@ impl EvolveReport {
                     stick_right: p.stick_zone.right,
                     asymptotic_stick_left: p.asymptotic_stick_zone.left,
                     asymptotic_stick_right: p.asymptotic_stick_zone.right,
-                    state: state_name(&p.state),
+                    state: p.state.as_str(),
                 })
                 .collect(),
             warnings: warnings(ev),

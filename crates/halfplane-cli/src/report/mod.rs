@@ -7,8 +7,6 @@ pub mod march;
 pub mod steady;
 
 use crate::units::{Quantity, Units};
-use halfplane::evolution::PointState;
-use halfplane::steady::Regime;
 use std::fmt::Write;
 
 /// One value of a row.
@@ -160,24 +158,6 @@ pub fn table<R>(columns: &[Column<R>], rows: &[R], units: &Units) -> String {
         });
     }
     o
-}
-
-/// The regime's name in every output.
-pub(crate) fn regime_name(r: &Regime) -> &'static str {
-    match r {
-        Regime::GrossSliding { .. } => "gross-sliding",
-        Regime::FullStick => "full-stick",
-        Regime::PartialSlip => "partial-slip",
-    }
-}
-
-/// A point's state name in every output.
-pub(crate) fn state_name(s: &PointState) -> &'static str {
-    match s {
-        PointState::FullStick => "full-stick",
-        PointState::PartialSlip => "partial-slip",
-        PointState::OneEdgeSlip { .. } => "one-edge-slip",
-    }
 }
 
 #[cfg(test)]

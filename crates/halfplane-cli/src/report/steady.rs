@@ -1,7 +1,6 @@
 //! The `steady` report: one nested record. The JSON is its serialization; the CSV is one row of
 //! its numbers under dotted names ([`SteadyReport::COLUMNS`]); the table shows it in words.
 
-use super::regime_name;
 use crate::units::{Quantity, Units};
 use halfplane::asymptotic::AsymptoticSteady;
 use halfplane::steady::{GivenPoint, Regime, SteadyState};
@@ -228,7 +227,7 @@ impl SteadyReport {
             _ => None,
         };
         Ok(Self {
-            regime: regime_name(&steady.regime),
+            regime: steady.regime.as_str(),
             profile: profile_report(contact),
             compliance: contact.compliance().value(),
             friction: contact.friction.value(),
