@@ -4,6 +4,10 @@
 //! The doc comments of the items below are the command's `--help` text, written for a terminal:
 //! there `[history]` names a case-file section, not a link.
 #![allow(rustdoc::broken_intra_doc_links)]
+// clap turns doc comments into help text, so the command and argument structs carry theirs on
+// the variants and options that show them; a doc comment on a struct or a flattened field would
+// change or duplicate the help.
+#![allow(missing_docs)]
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;

@@ -169,9 +169,12 @@ struct RawPoint {
 /// A resolved case: a validated contact and, when the file has them, a cycle and a history.
 #[derive(Debug, Clone)]
 pub struct Case {
+    /// `[material]`, `[friction]` and `[profile]`.
     pub contact: Contact,
+    /// `[cycle]`, if the file has one.
     pub cycle: Option<Cycle>,
     history: Option<History>,
+    /// `[solver]` (defaults where absent).
     pub solver: MarchOptions,
     /// The unit names of `[units]` (default N, mm, MPa), for labels only.
     pub units: crate::units::Units,

@@ -11,11 +11,15 @@ use halfplane::{Contact, Cycle, SteadyOptions};
 /// What `evolve` runs on.
 #[derive(Debug, Clone)]
 pub struct EvolveConfig {
+    /// The contact: profile, material and friction.
     pub contact: Contact,
+    /// The cycle of `[cycle]`.
     pub cycle: Cycle,
     /// Points per half-cycle, ends included, 2 to [`MAX_POINTS_PER_HALF`].
     pub points: usize,
+    /// The unit names of `[units]`, for the table headers.
     pub units: Units,
+    /// Table, CSV or JSON.
     pub format: Format,
 }
 

@@ -15,13 +15,17 @@ use std::path::{Path, PathBuf};
 /// What `march` runs on.
 #[derive(Debug, Clone)]
 pub struct MarchConfig {
+    /// The contact: profile, material and friction.
     pub contact: Contact,
+    /// The load history of `[history]`.
     pub history: History,
     /// `[solver]` with `--cells` applied.
     pub options: MarchOptions,
     /// `--fields DIR`: where to write the fields of every increment.
     pub fields: Option<PathBuf>,
+    /// The unit names of `[units]`, for the table headers.
     pub units: Units,
+    /// Table, CSV or JSON.
     pub format: Format,
 }
 

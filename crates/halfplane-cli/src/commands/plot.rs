@@ -17,35 +17,49 @@ pub const MAX_STEPS: usize = 20;
 /// What `plot` draws, and where.
 #[derive(Debug, Clone)]
 pub struct PlotConfig {
+    /// The contact: profile, material and friction.
     pub contact: Contact,
     /// The axes' unit names, from the case's `[units]`.
     pub units: Units,
     /// The output file (its name ending says SVG or PNG; the plot crate checks it).
     pub output: PathBuf,
+    /// Which figure, with its own settings.
     pub figure: FigureConfig,
 }
 
 /// The figure with what it alone needs.
 #[derive(Debug, Clone)]
 pub enum FigureConfig {
+    /// The P-Q load space of the cycle, with the full-stick and sliding boundaries.
     LoadSpace {
+        /// The cycle of `[cycle]`.
         cycle: Cycle,
     },
+    /// The paper's Figure 5: slip-zone size against the shear range.
     SlipMap(SlipMap),
+    /// The stick zone along the cycle (the paper's Figure 6), optionally with marching.
     Evolution {
+        /// The cycle of `[cycle]`.
         cycle: Cycle,
+        /// Points per half-cycle.
         points: usize,
         /// `--march`: the history to march and its solver settings.
         overlay: Option<(History, MarchOptions)>,
     },
+    /// Pressure, traction and slip of chosen increments of a marched history.
     MarchFields {
+        /// The load history of `[history]`.
         history: History,
+        /// `[solver]` with `--cells` applied.
         options: MarchOptions,
         /// Increments to draw: 1 to the history's length, at most [`MAX_STEPS`].
         steps: Vec<usize>,
     },
+    /// Stick intervals and contact edges of every increment of a marched history.
     MarchZones {
+        /// The load history of `[history]`.
         history: History,
+        /// `[solver]` with `--cells` applied.
         options: MarchOptions,
     },
 }

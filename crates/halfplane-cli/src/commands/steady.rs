@@ -10,9 +10,13 @@ use halfplane::{asymptotic, steady, Contact, Cycle, Regime, SteadyOptions};
 /// What `steady` runs on.
 #[derive(Debug, Clone)]
 pub struct SteadyConfig {
+    /// The contact: profile, material and friction.
     pub contact: Contact,
+    /// The cycle of `[cycle]`.
     pub cycle: Cycle,
+    /// The unit names of `[units]`, for the table headers.
     pub units: Units,
+    /// Table, CSV or JSON.
     pub format: Format,
 }
 

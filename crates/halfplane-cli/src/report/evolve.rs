@@ -74,6 +74,7 @@ pub struct EvolveReport {
 }
 
 impl EvolveReport {
+    /// The report of an evolution, with the unit names for the table.
     pub fn new(ev: &Evolution, units: &Units) -> Self {
         Self {
             regime: ev.regime.as_str(),

@@ -111,6 +111,7 @@ pub struct MarchReport<'a> {
 }
 
 impl<'a> MarchReport<'a> {
+    /// The report of a marched history, with the unit names for the table.
     pub fn new(result: &'a MarchResult, units: &Units) -> Self {
         Self {
             cells: result.x.len(),

@@ -8,6 +8,7 @@ use halfplane::{Contact, Shape, StickZone};
 use serde::Serialize;
 use std::fmt::Write;
 
+/// The `steady` report: one JSON object, one CSV row or the table.
 #[derive(Serialize)]
 pub struct SteadyReport {
     regime: &'static str,
@@ -176,6 +177,7 @@ fn profile_report(contact: &Contact) -> ProfileReport {
 }
 
 impl SteadyReport {
+    /// The report of a steady analysis and its asymptotic estimate, with the unit names.
     pub fn new(
         contact: &Contact,
         steady: &SteadyState,
