@@ -115,19 +115,7 @@ fn case_with(name: &str, text: &str, table: Option<&str>) -> ScratchFile {
     path
 }
 
-const GOOD: &str = r#"
-[material]
-youngs_modulus = 200000.0
-poisson_ratio = 0.3
-[friction]
-coefficient = 0.6
-[profile]
-kind = "hertz"
-radius = 50.0
-[cycle]
-point1 = { normal = 1000.0, shear = -250.0, bulk = -20.0 }
-point2 = { normal = 1400.0, shear = 250.0, bulk = 20.0 }
-"#;
+const GOOD: &str = REFERENCE_CASE;
 
 fn tabulated(table_line: &str) -> String {
     GOOD.replace(

@@ -84,16 +84,7 @@ fn fields_directory_holds_every_increment_and_the_slip_amplitude() {
     assert!(amp.starts_with("x,cycle_1,cycle_2,cycle_3\n"));
 }
 
-const BASE: &str = r#"
-[material]
-youngs_modulus = 200000.0
-poisson_ratio = 0.3
-[friction]
-coefficient = 0.6
-[profile]
-kind = "hertz"
-radius = 50.0
-"#;
+const BASE: &str = REFERENCE_CONTACT;
 
 fn case_with(name: &str, history: &str, csv: Option<&str>) -> ScratchFile {
     let dir = scratch(name);

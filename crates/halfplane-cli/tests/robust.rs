@@ -6,18 +6,7 @@ use common::*;
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
-const BASE: &str = r#"[material]
-youngs_modulus = 200000.0
-poisson_ratio = 0.3
-[friction]
-coefficient = 0.6
-[profile]
-kind = "hertz"
-radius = 50.0
-[cycle]
-point1 = { normal = 1000.0, shear = -250.0, bulk = -20.0 }
-point2 = { normal = 1400.0, shear = 250.0, bulk = 20.0 }
-"#;
+const BASE: &str = REFERENCE_CASE;
 
 fn write_case(name: &str, text: &str) -> ScratchFile {
     let path = ScratchFile::new(scratch(name), "case.toml");

@@ -76,3 +76,29 @@ impl std::ops::Deref for ScratchFile {
         &self.path
     }
 }
+
+/// The reference contact of docs/theory.md as case-file text (material, friction, Hertz profile).
+macro_rules! reference_contact {
+    () => {
+        r#"[material]
+youngs_modulus = 200000.0
+poisson_ratio = 0.3
+[friction]
+coefficient = 0.6
+[profile]
+kind = "hertz"
+radius = 50.0
+"#
+    };
+}
+
+/// The reference contact as case-file text, for tests that add their own `[cycle]`/`[history]`.
+pub const REFERENCE_CONTACT: &str = reference_contact!();
+
+/// The reference case (contact and cycle) as case-file text.
+pub const REFERENCE_CASE: &str = concat!(
+    reference_contact!(),
+    "[cycle]\n",
+    "point1 = { normal = 1000.0, shear = -250.0, bulk = -20.0 }\n",
+    "point2 = { normal = 1400.0, shear = 250.0, bulk = 20.0 }\n"
+);
