@@ -366,19 +366,14 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
             )?;
             let rows: Vec<[f64; 3]> = values.chunks_exact(3).map(|r| [r[0], r[1], r[2]]).collect();
             History::from_rows(&rows).map_err(|e| match e {
-                halfplane::Error::InvalidInput {
-                    field,
+                halfplane::Error::InvalidRow {
+                    row,
+                    column,
                     value,
                     valid,
-                } if field.starts_with("history row ") => {
-                    let rest = &field["history row ".len()..];
-                    let (row, column) = rest.split_once('.').unwrap_or((rest, "value"));
-                    let line = row
-                        .parse::<usize>()
-                        .ok()
-                        .and_then(|r| lines.get(r.wrapping_sub(1)))
-                        .copied()
-                        .unwrap_or(0);
+                    ..
+                } => {
+                    let line = lines.get(row.wrapping_sub(1)).copied().unwrap_or(0);
                     anyhow!(
                         "history.file {}, line {line}: {column} = {value}: must be {valid}",
                         path.display()

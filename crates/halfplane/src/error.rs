@@ -43,6 +43,21 @@ pub enum Error {
         max: usize,
     },
 
+    /// A value in a row of a table (a history) is outside its valid range.
+    #[error("{table} row {row}: invalid {column} = {value}: must be {valid}")]
+    InvalidRow {
+        /// Which table.
+        table: &'static str,
+        /// 1-based data row.
+        row: usize,
+        /// The column, as the table's header names it.
+        column: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// The valid range, in words.
+        valid: &'static str,
+    },
+
     /// A table (history, profile) has no data rows.
     #[error("the {what} table has no rows")]
     EmptyTable {

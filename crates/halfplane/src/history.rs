@@ -4,7 +4,7 @@
 //! Every history starts from zero load (nothing in contact); its first point is reached in one
 //! increment, so generated histories begin with a ramp.
 
-use crate::error::{physical, Error, Result};
+use crate::error::{physical, physical_positive, Error, Result};
 use crate::load::LoadPoint;
 use std::f64::consts::PI;
 
@@ -153,7 +153,8 @@ fn total_increments(parts: &[(Option<usize>, &str)]) -> Result<usize> {
 }
 
 impl History {
-    /// Explicit rows (validated: finite, P > 0); errors name the row (1-based).
+    /// Explicit rows `[normal, shear, bulk]`, validated as [`LoadPoint`]s are; an invalid value is
+    /// [`Error::InvalidRow`] with its 1-based row and column.
     pub fn from_rows(rows: &[[f64; 3]]) -> Result<Self> {
         if rows.is_empty() {
             return Err(Error::EmptyTable { what: "history" });
@@ -164,10 +165,28 @@ impl History {
                 max: MAX_INCREMENTS,
             });
         }
+        type Check = fn(&str, f64) -> Result<f64>;
+        let checks: [(&'static str, Check); 3] = [
+            ("normal", physical_positive),
+            ("shear", physical),
+            ("bulk", physical),
+        ];
+        for (i, r) in rows.iter().enumerate() {
+            for ((column, check), &value) in checks.iter().zip(r) {
+                if let Err(Error::InvalidInput { valid, .. }) = check(column, value) {
+                    return Err(Error::InvalidRow {
+                        table: "history",
+                        row: i + 1,
+                        column,
+                        value,
+                        valid,
+                    });
+                }
+            }
+        }
         let loads = rows
             .iter()
-            .enumerate()
-            .map(|(i, r)| LoadPoint::new(&format!("history row {}", i + 1), r[0], r[1], r[2]))
+            .map(|r| LoadPoint::new("history row", r[0], r[1], r[2]))
             .collect::<Result<_>>()?;
         Ok(Self {
             loads,

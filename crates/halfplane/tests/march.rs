@@ -429,12 +429,25 @@ fn gross_sliding_is_reported_with_its_step() {
 #[test]
 fn bad_histories_are_errors_naming_the_row() {
     let c = contact(Profile::hertz(RADIUS).unwrap());
-    let err = History::from_rows(&[[1000.0, 0.0, 0.0], [f64::NAN, 0.0, 0.0]]).unwrap_err();
-    assert!(err.to_string().contains("history row 2.normal"), "{err}");
-    let err = History::from_rows(&[[1000.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]).unwrap_err();
-    assert!(err.to_string().contains("history row 2.normal"), "{err}");
-    let err = History::from_rows(&[[1000.0, f64::INFINITY, 0.0]]).unwrap_err();
-    assert!(err.to_string().contains("history row 1.shear"), "{err}");
+    // The error carries the row and column as data (the CLI maps the row to a file line).
+    let row_error = |rows: &[[f64; 3]]| match History::from_rows(rows) {
+        Err(Error::InvalidRow { row, column, .. }) => (row, column),
+        other => panic!("expected InvalidRow, got {other:?}"),
+    };
+    assert_eq!(
+        row_error(&[[1000.0, 0.0, 0.0], [f64::NAN, 0.0, 0.0]]),
+        (2, "normal")
+    );
+    assert_eq!(
+        row_error(&[[1000.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]),
+        (2, "normal")
+    );
+    assert_eq!(row_error(&[[1000.0, f64::INFINITY, 0.0]]), (1, "shear"));
+    let err = History::from_rows(&[[1000.0, 0.0, 2e30]]).unwrap_err();
+    assert!(
+        err.to_string().contains("history row 1: invalid bulk = 2"),
+        "{err}"
+    );
     assert!(History::from_rows(&[]).is_err());
     // The limit, the default grid and the history stay usable after a rejected setting.
     assert!(march(
