@@ -11,6 +11,9 @@
 //! where `L(v)` is the lower-triangular Toeplitz matrix with first column v, J reverses and Z
 //! shifts down. The Levinson recursion gives x for every n from one set of reflection
 //! coefficients, so a solve costs a few FFTs instead of a factorisation.
+//!
+//! Owns the Toeplitz algebra and its generator cache. Never knows what the matrix means (the
+//! kernel is `kernel.rs`'s) nor which cells stick (`solve.rs` chooses the runs).
 
 use crate::error::{Error, Result};
 use realfft::num_complex::Complex;
@@ -320,18 +323,8 @@ pub(super) mod tests {
     }
 
     fn log_row(n: usize) -> Vec<f64> {
-        // -integral over a unit cell of ln(|xi - x_i|/l), l = 4n: the project's kernel shape.
-        let l = 4.0 * n as f64;
-        let f = |t: f64| {
-            if t == 0.0 {
-                0.0
-            } else {
-                t * (t.abs() / l).ln() - t
-            }
-        };
-        (0..n)
-            .map(|k| -(f(k as f64 + 0.5) - f(k as f64 - 0.5)))
-            .collect()
+        // -integral over a unit cell of ln(|xi - x_i|/l), l = 4n: the project's kernel.
+        crate::march::kernel::cell_row(n, 1.0, 4.0 * n as f64)
     }
 
     #[test]
