@@ -7,9 +7,8 @@
 
 use super::marcher::Marcher;
 use super::types::{CycleReport, Fields, MarchOptions, MarchResult, StepReport};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::history::History;
-use crate::load::LoadPoint;
 use crate::normal::Contact;
 
 /// Marches through `history`. `observer` sees each increment's report and fields as it is made
@@ -20,20 +19,7 @@ pub fn march(
     options: &MarchOptions,
     mut observer: impl FnMut(&StepReport, &Fields),
 ) -> Result<MarchResult> {
-    if history.loads().is_empty() {
-        return Err(Error::InvalidTable {
-            row: 0,
-            problem: "the history has no rows".into(),
-        });
-    }
-    for (i, p) in history.loads().iter().enumerate() {
-        LoadPoint::new(
-            &format!("history row {}", i + 1),
-            p.normal(),
-            p.shear(),
-            p.bulk(),
-        )?;
-    }
+    // A History is valid by construction: at least one row, every load a valid LoadPoint.
     let p_max = history
         .loads()
         .iter()
@@ -46,33 +32,22 @@ pub fn march(
     let mut cycles = Vec::new();
     let (mut low, mut high) = (vec![0.0; n], vec![0.0; n]);
     let mut cycle_energy_start = 0.0;
+    let structure = history.cycles();
     for (k, load) in history.loads().iter().enumerate() {
-        let cycle_of = |k: usize| {
-            history
-                .cycles()
-                .and_then(|c| {
-                    (k >= c.first_step()).then(|| (k - c.first_step()) / c.steps_per_cycle())
-                })
-                .filter(|&c| history.cycles().is_some_and(|s| c < s.count()))
-        };
-        if let Some(c) = cycle_of(k) {
-            if k == history.cycles().unwrap().first_step()
-                + c * history.cycles().unwrap().steps_per_cycle()
-            {
-                low.copy_from_slice(&marcher.slip);
-                high.copy_from_slice(&marcher.slip);
-                cycle_energy_start = marcher.energy;
-            }
+        let cycle = structure.and_then(|s| s.cycle_of(k).map(|c| (s, c)));
+        if cycle.is_some_and(|(s, _)| s.starts_cycle(k)) {
+            low.copy_from_slice(&marcher.slip);
+            high.copy_from_slice(&marcher.slip);
+            cycle_energy_start = marcher.energy;
         }
         let report = marcher.step(*load)?;
         observer(&report, &marcher.fields());
-        if let Some(c) = cycle_of(k) {
+        if let Some((s, c)) = cycle {
             for i in 0..n {
                 low[i] = low[i].min(marcher.slip[i]);
                 high[i] = high[i].max(marcher.slip[i]);
             }
-            let s = history.cycles().unwrap();
-            if k + 1 == s.first_step() + (c + 1) * s.steps_per_cycle() {
+            if s.ends_cycle(k) {
                 cycles.push(CycleReport {
                     index: c + 1,
                     energy: marcher.energy - cycle_energy_start,
