@@ -3,17 +3,22 @@
 //! fields and zones. SVG or PNG by file name, rendered in pure Rust with a bundled font.
 //!
 //! Each `*_figure` function returns a [`Figure`] (plain data: panels of named series) that
-//! [`write()`] renders, so callers and tests can inspect exactly what is drawn.
+//! [`write()`] renders, so callers and tests can inspect exactly what is drawn. The science behind
+//! the figures is the library's: this crate only draws. The slip-map sweep ([`SlipMap`]) and the
+//! march recorders ([`MarchedCycle`], [`FieldRecorder`], [`StepFields`]) live in
+//! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
 mod render;
 
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 
+pub use halfplane::record::{FieldRecorder, MarchedCycle, StepFields};
+pub use halfplane::slip_map::SlipMap;
+
 use halfplane::asymptotic::{equivalent_shear, Edge};
 use halfplane::evolution::Evolution;
-use halfplane::march::{Fields, MarchResult};
-use halfplane::steady::{self, Regime, SteadyOptions};
-use halfplane::{Contact, Cycle, Friction, LoadPoint};
+use halfplane::march::MarchResult;
+use halfplane::{Contact, Cycle, LoadPoint};
 use thiserror::Error;
 
 /// What can go wrong when plotting.
@@ -146,104 +151,41 @@ pub fn load_space_figure(
     })
 }
 
-/// Parameters of the slip-zone map (the paper's Figure 5).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SlipMap {
-    /// Normal load at point 1, P1 (force per length).
-    pub normal: f64,
-    /// Friction coefficients, one panel each (the paper: 0.3 and 0.6).
-    pub frictions: Vec<f64>,
-    /// P2/P1 values.
-    pub ratios: Vec<f64>,
-    /// dsigma/P1 values (1/length), with dsigma = sigma1 - sigma2.
-    pub tensions: Vec<f64>,
-    /// Points along dQ/(f P0) in (0, 1).
-    pub samples: usize,
-}
-
-/// Slip-zone map in the style of the paper's Figure 5: the right-edge slip zone at the smaller
-/// contact, `(min(a1, a2) - n)/a0` with `a0 = a(P0)`, against `dQ/(f P0)`, one curve per
-/// (P2/P1, dsigma/P1), one panel per friction coefficient. (At the smaller contact the paper's
-/// observation holds that a larger P2/P1 shortens the slip zone, and the curves meet zero
-/// continuously at the full-stick limit when dsigma = 0.) Cycles are centred on Q = 0 and on
-/// sigma = 0. Points where the analysis does not apply (slip zones that do not grow monotonically
-/// through a half-cycle, stick zone outside the contact) are left out, so curves may stop early;
-/// with tension they stop short of the full-stick limit, since monotone growth needs
-/// `dQ - pi a_max |dsigma|/4 > f |dP|` (`docs/validity.md`).
+/// Slip-zone map in the style of the paper's Figure 5, drawn from [`SlipMap::sweep`]: the
+/// right-edge slip zone at the smaller contact, `(min(a1, a2) - n)/a0` with `a0 = a(P0)`, against
+/// `dQ/(f P0)`, one curve per (P2/P1, dsigma/P1), one panel per friction coefficient. The
+/// definitions, and which points are left out (so curves may stop early), are those of
+/// [`halfplane::slip_map`].
 pub fn slip_map_figure(
     contact: &Contact,
     map: &SlipMap,
     units: &Units,
 ) -> Result<Figure, PlotError> {
-    let mut panels = Vec::new();
-    for &f in &map.frictions {
-        let friction = Friction::new(f)?;
-        let c = Contact {
-            friction,
-            ..contact.clone()
-        };
-        let mut series = Vec::new();
-        let mut color = 0;
-        for &ratio in &map.ratios {
-            for &tension in &map.tensions {
-                let (p1, p2) = (map.normal, ratio * map.normal);
-                let p0 = 0.5 * (p1 + p2);
-                let a0 = c.half_width(p0)?;
-                let d_sigma = tension * p1;
-                let mut pieces = vec![Vec::new()];
-                for i in 1..map.samples {
-                    let x = i as f64 / map.samples as f64;
-                    let dq = x * f * p0;
-                    let low = LoadPoint::new("point1", p1, -0.5 * dq, 0.5 * d_sigma)?;
-                    let high = LoadPoint::new("point2", p2, 0.5 * dq, -0.5 * d_sigma)?;
-                    match steady::analyse(&c, &Cycle::new(low, high), &SteadyOptions::default()) {
-                        Ok(s)
-                            if s.regime == Regime::PartialSlip || s.regime == Regime::FullStick =>
-                        {
-                            let right = s.stick_zone.map_or(0.0, |z| z.right);
-                            let a_min = s.half_width[0].min(s.half_width[1]);
-                            let w = if s.regime == Regime::FullStick {
-                                0.0
-                            } else {
-                                (a_min - right) / a0
-                            };
-                            // `pieces` starts with one piece and only grows, so there is a
-                            // last one; a fresh one would do if there were not.
-                            match pieces.last_mut() {
-                                Some(last) => last.push((x, w)),
-                                None => pieces.push(vec![(x, w)]),
-                            }
-                        }
-                        _ => {
-                            if pieces.last().is_some_and(|p| !p.is_empty()) {
-                                pieces.push(Vec::new());
-                            }
-                        }
-                    }
-                }
-                pieces.retain(|p| !p.is_empty());
-                let name = format!("P2/P1 = {ratio}, Δσ/P1 = {tension}");
-                series.push(Series {
-                    name,
-                    style: if ratio == 1.0 && tension == 0.0 {
+    let panels = map
+        .sweep(contact)?
+        .into_iter()
+        .map(|panel| Panel {
+            legend: Legend::Auto,
+            title: format!("f = {}", panel.friction),
+            x_label: "ΔQ/(f P0)".into(),
+            y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
+            series: panel
+                .curves
+                .into_iter()
+                .enumerate()
+                .map(|(color, curve)| Series {
+                    name: format!("P2/P1 = {}, Δσ/P1 = {}", curve.ratio, curve.tension),
+                    style: if curve.ratio == 1.0 && curve.tension == 0.0 {
                         Style::Dashed
                     } else {
                         Style::Line
                     },
                     color,
-                    pieces,
-                });
-                color += 1;
-            }
-        }
-        panels.push(Panel {
-            legend: Legend::Auto,
-            title: format!("f = {f}"),
-            x_label: "ΔQ/(f P0)".into(),
-            y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
-            series,
-        });
-    }
+                    pieces: curve.pieces,
+                })
+                .collect(),
+        })
+        .collect();
     Ok(Figure {
         title: format!(
             "Slip-zone map (P1 = {} {})",
@@ -251,39 +193,6 @@ pub fn slip_map_figure(
         ),
         panels,
     })
-}
-
-/// A marched history's stick intervals in the time of the steady cycle: `(t, left, right)` with
-/// t in [0, 2] over the last cycle (half 1 then half 2), for overlaying on the evolution.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MarchedCycle {
-    /// `(t, left, right)` for every increment of the last cycle (largest stick interval).
-    pub points: Vec<(f64, f64, f64)>,
-}
-
-impl MarchedCycle {
-    /// The last cycle of `result` (its history must have cycles).
-    pub fn last_cycle(
-        result: &MarchResult,
-        history: &halfplane::history::History,
-    ) -> Result<Self, PlotError> {
-        let c = history.cycles().ok_or_else(|| {
-            PlotError::Request(
-                "the marching overlay needs a cyclic history ([history] kind = \"cycle\")".into(),
-            )
-        })?;
-        let start = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
-        let points = (1..=c.steps_per_cycle())
-            .filter_map(|k| {
-                result
-                    .steps
-                    .get(start + k - 1)?
-                    .largest_stick()
-                    .map(|[l, r]| (2.0 * k as f64 / c.steps_per_cycle() as f64, l, r))
-            })
-            .collect();
-        Ok(Self { points })
-    }
 }
 
 /// Contact and stick-zone evolution over a cycle in the style of the paper's Figure 6: contact
@@ -362,45 +271,6 @@ pub fn evolution_figure(
     Figure {
         title: "Contact and stick-zone evolution over a cycle".into(),
         panels: vec![panel(false), panel(true)],
-    }
-}
-
-/// Fields of chosen increments, as kept by [`FieldRecorder`].
-#[derive(Debug, Clone, PartialEq)]
-pub struct StepFields {
-    /// Increment number.
-    pub step: usize,
-    /// Cell centres.
-    pub x: Vec<f64>,
-    /// f p (the friction limit).
-    pub limit: Vec<f64>,
-    /// Shear traction.
-    pub traction: Vec<f64>,
-    /// Accumulated slip.
-    pub slip: Vec<f64>,
-}
-
-/// Keeps copies of the fields at chosen increments (use it in the marching observer).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct FieldRecorder {
-    /// Increments to keep.
-    pub steps: Vec<usize>,
-    /// What was kept.
-    pub kept: Vec<StepFields>,
-}
-
-impl FieldRecorder {
-    /// Records `fields` if `step` is wanted.
-    pub fn observe(&mut self, step: usize, fields: &Fields, friction: f64) {
-        if self.steps.contains(&step) {
-            self.kept.push(StepFields {
-                step,
-                x: fields.x.to_vec(),
-                limit: fields.pressure.iter().map(|p| friction * p).collect(),
-                traction: fields.traction.to_vec(),
-                slip: fields.slip.to_vec(),
-            });
-        }
     }
 }
 

@@ -400,6 +400,6 @@ fn bad_requests_are_clear_errors() {
         |_, _| {},
     )
     .unwrap();
-    let err = MarchedCycle::last_cycle(&result, &history).unwrap_err();
-    assert!(err.to_string().contains("cyclic history"), "{err}");
+    // A history without cycles has no last cycle to overlay.
+    assert_eq!(MarchedCycle::last_cycle(&result, &history), None);
 }

@@ -24,8 +24,9 @@
 //!
 //! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
-//! (edge description), [`evolution`] (stick zone along the cycle), [`closed_form`] (reference
-//! solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
+//! (edge description), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
+//! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`closed_form`]
+//! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
@@ -39,7 +40,9 @@ pub mod material;
 pub mod normal;
 pub mod profile;
 mod quadrature;
+pub mod record;
 pub mod reference;
+pub mod slip_map;
 mod spline;
 pub mod steady;
 

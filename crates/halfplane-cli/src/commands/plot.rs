@@ -3,7 +3,7 @@
 use crate::args::{FigureArgs, PlotCommand};
 use crate::case::Case;
 use crate::output::note;
-use anyhow::{bail, Result};
+use anyhow::{anyhow, bail, Result};
 use halfplane::history::History;
 use halfplane::march::{self, MarchOptions};
 use halfplane::{Contact, Cycle};
@@ -188,7 +188,12 @@ pub fn run(config: &PlotConfig) -> Result<()> {
             let marched = match overlay {
                 Some((history, options)) => {
                     let result = march::march(contact, history, options, |_, _| {})?;
-                    Some(MarchedCycle::last_cycle(&result, history)?)
+                    let marched = MarchedCycle::last_cycle(&result, history).ok_or_else(|| {
+                        anyhow!(
+                            "the marching overlay needs a cyclic history ([history] kind = \"cycle\")"
+                        )
+                    })?;
+                    Some(marched)
                 }
                 None => None,
             };
