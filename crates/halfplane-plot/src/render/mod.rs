@@ -1,0 +1,94 @@
+//! A small renderer: panels of named series drawn side by side. plotters lays the figure out and
+//! writes SVG; a PNG is that SVG rendered by resvg, so both formats show the same text layout.
+//! Both use only the bundled DejaVu Sans (no system font library).
+//!
+//! This module owns the entry points ([`write()`], [`render_svg()`]) and the figure geometry; the
+//! rooms below own one concept each: [`figure`] the data model, [`palette`](mod@palette) the
+//! colours, [`font`] the bundled font, [`axes`] bounds, ticks and the chart frame, [`legend`] legend
+//! placement, [`draw`](mod@draw) the SVG drawing and [`png`] the PNG rendering.
+
+mod axes;
+mod draw;
+mod figure;
+mod font;
+mod legend;
+mod palette;
+mod png;
+
+pub use figure::{Figure, Legend, Panel, Series, Style};
+pub use palette::palette;
+
+use crate::PlotError;
+use draw::draw;
+use font::{register_font, FAMILY, SVG_FAMILY};
+use legend::{plan, Placement};
+use plotters::prelude::*;
+use png::render_png;
+use std::path::Path;
+
+/// Width of one panel and height of a figure without a legend strip, in pixels.
+const PANEL_WIDTH: u32 = 640;
+const HEIGHT: u32 = 520;
+/// Legend geometry, in pixels.
+const LEGEND_FONT: u32 = 13;
+const ROW: i32 = 18;
+const SAMPLE: i32 = 30;
+const PAD: i32 = 6;
+const INSET: i32 = 8;
+
+fn draw_error<E: std::fmt::Debug>(e: E) -> PlotError {
+    PlotError::Draw(format!("{e:?}"))
+}
+
+/// Writes `figure` to `path`: SVG for `.svg`, PNG for `.png`.
+pub fn write(figure: &Figure, path: &Path) -> Result<(), PlotError> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let png = match ext.as_deref() {
+        Some("svg") => false,
+        Some("png") => true,
+        _ => {
+            return Err(PlotError::Format {
+                path: path.display().to_string(),
+            })
+        }
+    };
+    let (svg, size) = render_svg(figure)?;
+    let bytes = if png {
+        render_png(&svg, size)?
+    } else {
+        svg.into_bytes()
+    };
+    std::fs::write(path, bytes).map_err(|e| PlotError::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })
+}
+
+/// The figure as an SVG document, and its size in pixels.
+pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
+    register_font();
+    let width = (PANEL_WIDTH * figure.panels.len().max(1) as u32).min(1920);
+    let plan = plan(figure, (width, HEIGHT))?;
+    let strip = plan
+        .iter()
+        .filter_map(|p| match p.place {
+            Placement::Below { rows, .. } => Some(rows * ROW + 2 * PAD),
+            Placement::Box(..) => None,
+        })
+        .max()
+        .unwrap_or(0);
+    let size = (width, HEIGHT + strip as u32);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        draw(figure, &plan, strip, root)?;
+    }
+    let svg = svg.replace(
+        &format!("font-family=\"{FAMILY}\""),
+        &format!("font-family=\"{SVG_FAMILY}\""),
+    );
+    Ok((svg, size))
+}
