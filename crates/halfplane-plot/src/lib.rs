@@ -204,7 +204,7 @@ pub fn evolution_figure(
     marched: Option<&MarchedCycle>,
     units: &Units,
 ) -> Figure {
-    let t = |p: &halfplane::evolution::EvolutionPoint| (p.half - 1) as f64 + p.fraction;
+    let t = |p: &halfplane::evolution::EvolutionPoint| (p.half.number() - 1) as f64 + p.fraction;
     let pts = &evolution.points;
     let line = |f: &dyn Fn(&halfplane::evolution::EvolutionPoint) -> f64| {
         pts.iter().map(|p| (t(p), f(p))).collect::<Vec<_>>()

@@ -7,6 +7,7 @@
 
 use crate::error::{Error, Result};
 pub use crate::labels::Edge;
+use crate::labels::{GivenPoint, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::steady::StickZone;
@@ -33,10 +34,10 @@ pub struct EdgeState {
     pub half_width: f64,
     /// Normal intensity K_N (same at both edges).
     pub normal_intensity: f64,
-    /// `[K_T at left, K_T at right]`.
-    pub shear_intensity: [f64; 2],
-    /// `[S at left, S at right]`.
-    pub equivalent_shear: [f64; 2],
+    /// K_T at each edge.
+    pub shear_intensity: PerEdge<f64>,
+    /// S at each edge.
+    pub equivalent_shear: PerEdge<f64>,
 }
 
 impl EdgeState {
@@ -57,10 +58,12 @@ impl EdgeState {
         Ok(Self {
             half_width: a,
             normal_intensity,
-            shear_intensity: [Edge::Left, Edge::Right]
-                .map(|e| shear_intensity(point.shear(), point.bulk(), a, e)),
-            equivalent_shear: [Edge::Left, Edge::Right]
-                .map(|e| equivalent_shear(point.shear(), point.bulk(), a, e)),
+            shear_intensity: PerEdge::from_fn(|e| {
+                shear_intensity(point.shear(), point.bulk(), a, e)
+            }),
+            equivalent_shear: PerEdge::from_fn(|e| {
+                equivalent_shear(point.shear(), point.bulk(), a, e)
+            }),
         })
     }
 }
@@ -70,16 +73,16 @@ impl EdgeState {
 /// `w = |K_T(now) - K_T(start)|/(f K_N(now)) + (a_now - a_start)/2`.
 /// Not clamped: `w <= 0` means that edge still sticks.
 pub fn slip_zone_size(start: &EdgeState, now: &EdgeState, friction: f64, edge: Edge) -> f64 {
-    let i = edge as usize;
-    (now.shear_intensity[i] - start.shear_intensity[i]).abs() / (friction * now.normal_intensity)
+    (now.shear_intensity[edge] - start.shear_intensity[edge]).abs()
+        / (friction * now.normal_intensity)
         + 0.5 * (now.half_width - start.half_width)
 }
 
-/// Stick zone implied by slip-zone sizes `[w_left, w_right]` in a contact of half-width a.
-pub fn stick_zone_from_slip(half_width: f64, slip: [f64; 2]) -> StickZone {
+/// Stick zone implied by the slip-zone sizes `w` at each edge in a contact of half-width a.
+pub fn stick_zone_from_slip(half_width: f64, slip: PerEdge<f64>) -> StickZone {
     StickZone {
-        left: -(half_width - slip[0].max(0.0)),
-        right: half_width - slip[1].max(0.0),
+        left: -(half_width - slip.left.max(0.0)),
+        right: half_width - slip.right.max(0.0),
     }
 }
 
@@ -93,9 +96,9 @@ pub struct AsymptoticSteady {
     pub stick_load: [f64; 2],
     /// Permanent stick zone estimate `[-a(P_K left), a(P_K right)]`.
     pub stick_zone: StickZone,
-    /// Slip-zone sizes `w` at the first and second points as given, `[left, right]` each, from
+    /// Slip-zone sizes `w` per edge, then at the first and second points as given, from
     /// [`slip_zone_size`] over the half-cycle that ends there.
-    pub slip_zones: [[f64; 2]; 2],
+    pub slip_zones: PerEdge<PerPoint<f64>>,
 }
 
 /// Evaluates the asymptotic description of the cycle. Errors: [`Error::GrossSliding`] when an
@@ -104,7 +107,7 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
     let f = contact.friction.value();
     let (first, second) = cycle.as_given();
     // The edge description assumes partial slip: a sliding end has no stick zone to describe.
-    for (point, p) in [("first", first), ("second", second)] {
+    for (point, p) in GivenPoint::BOTH.into_iter().zip([first, second]) {
         if p.shear().abs() >= f * p.normal() {
             return Err(Error::GrossSliding {
                 point,
@@ -128,7 +131,7 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
     let mut ends = [0.0; 2];
     for edge in [Edge::Left, Edge::Right] {
         let i = edge as usize;
-        let p_k = p0 - (hi.equivalent_shear[i] - lo.equivalent_shear[i]) / (2.0 * f);
+        let p_k = p0 - (hi.equivalent_shear[edge] - lo.equivalent_shear[edge]) / (2.0 * f);
         if p_k.is_nan() || p_k <= 0.0 {
             return Err(Error::AsymptoticBreakdown {
                 edge: edge.name(),
@@ -138,9 +141,9 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
         stick_load[i] = p_k;
         ends[i] = contact.half_width(p_k)?;
     }
-    let slip_at = |start: &EdgeState, now: &EdgeState| {
-        [Edge::Left, Edge::Right].map(|e| slip_zone_size(start, now, f, e))
-    };
+    // Over the half-cycle that ends at each point: half 2 ends at the first point, half 1 at the
+    // second.
+    let slip_at = |start: &EdgeState, now: &EdgeState, edge| slip_zone_size(start, now, f, edge);
     Ok(AsymptoticSteady {
         edges,
         stick_load,
@@ -148,6 +151,9 @@ pub fn steady(contact: &Contact, cycle: &Cycle) -> Result<AsymptoticSteady> {
             left: -ends[0],
             right: ends[1],
         },
-        slip_zones: [slip_at(&edges[1], &edges[0]), slip_at(&edges[0], &edges[1])],
+        slip_zones: PerEdge::from_fn(|e| PerPoint {
+            first: slip_at(&edges[1], &edges[0], e),
+            second: slip_at(&edges[0], &edges[1], e),
+        }),
     })
 }

@@ -1,7 +1,7 @@
 //! Typed errors. Every variant carries the offending value and says what would be valid, so a
 //! caller (CLI, Python binding, sweep driver) can report it without string parsing.
 
-use crate::labels::Edge;
+use crate::labels::{Edge, GivenPoint, Half};
 use thiserror::Error;
 
 /// Everything that can go wrong in the library. Messages state the problem and what would be
@@ -125,8 +125,9 @@ pub enum Error {
         edge_name = .edge.name()
     )]
     SlipReversesInHalf {
-        /// 1: the half from the first point as given to the second; 2: back.
-        half: u8,
+        /// The half: [`Half::First`] from the first point as given to the second (printed "half 1"),
+        /// [`Half::Second`] back ("half 2").
+        half: Half,
         /// The edge whose slip zone stops growing.
         edge: Edge,
         /// Fraction of the half (0 to 1) where it first happens.
@@ -170,8 +171,8 @@ pub enum Error {
          (the steady-state analysis reports this as the gross-sliding regime)"
     )]
     GrossSliding {
-        /// "first" or "second", as given.
-        point: &'static str,
+        /// The point as given (printed "first" or "second").
+        point: GivenPoint,
         /// |Q| there.
         shear: f64,
         /// f P there.

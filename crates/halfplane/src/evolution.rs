@@ -11,7 +11,7 @@
 
 use crate::asymptotic::{self, Edge, EdgeState};
 use crate::error::{Error, Result};
-use crate::labels::{display_as_str, Half, PerPoint};
+use crate::labels::{display_as_str, Half, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::steady::{self, Regime, Segment, SteadyOptions, StickZone};
@@ -50,8 +50,8 @@ display_as_str!(PointState);
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub struct EvolutionPoint {
-    /// 1: from the first point as given to the second; 2: back.
-    pub half: u8,
+    /// The half: [`Half::First`] from the first point as given to the second, [`Half::Second`] back.
+    pub half: Half,
     /// Fraction of the way along the half, 0 to 1.
     pub fraction: f64,
     /// The load at this point.
@@ -74,8 +74,8 @@ pub enum EvolutionWarning {
     /// exact there. Cannot occur for a cycle that [`steady::analyse`] accepts (it checks exactly
     /// this along both halves); kept as a guard against a failure between its sample points.
     NonMonotoneSlip {
-        /// Half (1 or 2).
-        half: u8,
+        /// The half.
+        half: Half,
         /// Edge.
         edge: Edge,
         /// Fraction where it happened.
@@ -83,8 +83,8 @@ pub enum EvolutionWarning {
     },
     /// Some points have slip at one edge only (see [`PointState::OneEdgeSlip`]).
     OneEdgeSlip {
-        /// Half (1 or 2).
-        half: u8,
+        /// The half.
+        half: Half,
         /// Number of such points.
         count: usize,
     },
@@ -132,7 +132,7 @@ pub fn evolve(
     if let Regime::GrossSliding { point } = steady.regime {
         let p = given[point];
         return Err(Error::GrossSliding {
-            point: point.as_str(),
+            point,
             shear: p.shear().abs(),
             limit: contact.friction.value() * p.normal(),
         });
@@ -200,7 +200,7 @@ pub fn evolve(
                 ] {
                     if moved_out {
                         warnings.push(EvolutionWarning::NonMonotoneSlip {
-                            half: half.number(),
+                            half,
                             edge,
                             fraction,
                         });
@@ -210,14 +210,14 @@ pub fn evolve(
             if state != PointState::FullStick {
                 previous = Some(zone);
             }
-            let slip = Edge::BOTH.map(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
+            let slip = PerEdge::from_fn(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
             let asymptotic_stick_zone = if steady.regime == Regime::PartialSlip {
                 asymptotic::stick_zone_from_slip(a_x, slip)
             } else {
                 whole
             };
             points.push(EvolutionPoint {
-                half: half.number(),
+                half,
                 fraction,
                 load,
                 half_width: a_x,
@@ -228,7 +228,7 @@ pub fn evolve(
         }
         if one_edge > 0 {
             warnings.push(EvolutionWarning::OneEdgeSlip {
-                half: half.number(),
+                half,
                 count: one_edge,
             });
         }

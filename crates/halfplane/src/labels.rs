@@ -68,8 +68,8 @@ impl GivenPoint {
     }
 }
 
-/// A half of the cycle, numbered as the evolution and [`crate::Error::SlipReversesInHalf`] number
-/// them (`half: u8`): half 1 runs from the first point as given to the second, half 2 back.
+/// A half of the cycle, numbered as the evolution and [`crate::Error::SlipReversesInHalf`] print
+/// them: half 1 runs from the first point as given to the second, half 2 back.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Half {
     /// Half 1: from the first point as given to the second.
@@ -82,7 +82,7 @@ impl Half {
     /// Both halves, in cycle order.
     pub const BOTH: [Half; 2] = [Half::First, Half::Second];
 
-    /// 1 or 2, the number the library's `half: u8` fields carry.
+    /// 1 or 2, the number the half is printed by.
     pub fn number(self) -> u8 {
         match self {
             Half::First => 1,
@@ -105,6 +105,14 @@ impl Half {
         match self {
             Half::First => "1",
             Half::Second => "2",
+        }
+    }
+
+    /// The other half: the same half-cycle, numbered for the points given in the other order.
+    pub fn other(self) -> Half {
+        match self {
+            Half::First => Half::Second,
+            Half::Second => Half::First,
         }
     }
 
@@ -165,9 +173,31 @@ impl<T> PerEdge<T> {
         }
     }
 
-    /// `[left, right]`, the order of the library's `[f64; 2]` per-edge fields.
+    /// `[left, right]`.
     pub fn to_array(self) -> [T; 2] {
         [self.left, self.right]
+    }
+
+    /// References to the values, left first.
+    pub fn iter(&self) -> std::array::IntoIter<&T, 2> {
+        [&self.left, &self.right].into_iter()
+    }
+}
+
+/// The values, left first.
+impl<T> IntoIterator for PerEdge<T> {
+    type Item = T;
+    type IntoIter = std::array::IntoIter<T, 2>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.to_array().into_iter()
+    }
+}
+
+impl<'a, T> IntoIterator for &'a PerEdge<T> {
+    type Item = &'a T;
+    type IntoIter = std::array::IntoIter<&'a T, 2>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
     }
 }
 
@@ -216,9 +246,36 @@ impl<T> PerPoint<T> {
         }
     }
 
-    /// `[first, second]`, the order of the library's `[f64; 2]` per-point fields.
+    /// `[first, second]`.
     pub fn to_array(self) -> [T; 2] {
         [self.first, self.second]
+    }
+
+    /// References to the values, first point first.
+    pub fn iter(&self) -> std::array::IntoIter<&T, 2> {
+        [&self.first, &self.second].into_iter()
+    }
+
+    /// Exchanges the two values: the same pair for the points given in the other order.
+    pub fn swap(&mut self) {
+        std::mem::swap(&mut self.first, &mut self.second);
+    }
+}
+
+/// The values, first point first.
+impl<T> IntoIterator for PerPoint<T> {
+    type Item = T;
+    type IntoIter = std::array::IntoIter<T, 2>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.to_array().into_iter()
+    }
+}
+
+impl<'a, T> IntoIterator for &'a PerPoint<T> {
+    type Item = &'a T;
+    type IntoIter = std::array::IntoIter<&'a T, 2>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
     }
 }
 
@@ -277,6 +334,28 @@ mod tests {
             states.map(|s| s.to_string()),
             ["full-stick", "partial-slip", "one-edge-slip"]
         );
+    }
+
+    /// The error messages print the labels as they printed the old `u8` and `&str` fields.
+    #[test]
+    fn error_messages_print_the_labels() {
+        let slip = crate::Error::SlipReversesInHalf {
+            half: Half::Second,
+            edge: Edge::Right,
+            fraction: 0.0,
+            boundary_rate: -0.07,
+            limit_rate: -0.13,
+        }
+        .to_string();
+        assert!(slip
+            .starts_with("slip at the right edge does not keep one direction through half 2 of"));
+        let sliding = crate::Error::GrossSliding {
+            point: GivenPoint::First,
+            shear: 250.0,
+            limit: 200.0,
+        }
+        .to_string();
+        assert!(sliding.starts_with("the contact slides at the first point: |Q| = 250.000000"));
     }
 
     #[test]

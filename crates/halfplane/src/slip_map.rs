@@ -162,7 +162,7 @@ pub fn right_slip_zone(contact: &Contact, cycle: &Cycle) -> Option<f64> {
         Regime::FullStick => Some(0.0),
         Regime::PartialSlip => {
             let right = s.stick_zone.map_or(0.0, |z| z.right);
-            Some(s.half_width[0].min(s.half_width[1]) - right)
+            Some(s.half_width.first.min(s.half_width.second) - right)
         }
         Regime::GrossSliding { .. } => None,
     }
@@ -275,7 +275,8 @@ mod tests {
         let s = steady::analyse(&c, &cycle, &SteadyOptions::default()).unwrap();
         assert_eq!(s.regime, Regime::PartialSlip);
         let n = s.stick_zone.unwrap().right;
-        let expected = (s.half_width[0].min(s.half_width[1]) - n) / c.half_width(p0).unwrap();
+        let expected =
+            (s.half_width.first.min(s.half_width.second) - n) / c.half_width(p0).unwrap();
         assert!((y - expected).abs() < 1e-12, "{y} vs {expected}");
     }
 

@@ -4,7 +4,7 @@ mod common;
 use common::*;
 use halfplane::asymptotic::{self, equivalent_shear, shear_intensity, Edge};
 use halfplane::steady::{self, SteadyOptions};
-use halfplane::{Contact, Cycle, LoadPoint, Profile};
+use halfplane::{Contact, Cycle, GivenPoint, LoadPoint, Profile};
 
 /// Largest relative error of the four slip-zone estimates and of the stick-zone ends measured on
 /// the slip-zone scale, for load ranges scaled by `lambda` about a fixed mean.
@@ -19,12 +19,12 @@ fn errors(c: &Contact, lambda: f64) -> (f64, f64) {
     let zone = exact.stick_zone.unwrap();
     let est = asymptotic::steady(c, &cycle).unwrap();
     let mut w_err: f64 = 0.0;
-    for i in 0..2 {
+    for i in GivenPoint::BOTH {
         w_err = w_err
-            .max(rel(est.slip_zones[i][0], slip.left[i]))
-            .max(rel(est.slip_zones[i][1], slip.right[i]));
+            .max(rel(est.slip_zones.left[i], slip.left[i]))
+            .max(rel(est.slip_zones.right[i], slip.right[i]));
     }
-    let scale = exact.half_width[0] - zone.right;
+    let scale = exact.half_width.first - zone.right;
     let z_err = ((est.stick_zone.left - zone.left)
         .abs()
         .max((est.stick_zone.right - zone.right).abs()))
@@ -102,9 +102,9 @@ fn mindlin_slip_zone_is_recovered_for_constant_normal_load() {
     let mindlin =
         a - halfplane::closed_form::cattaneo_mindlin_stick_half_width(a, 0.6, 1000.0, dq / 2.0);
     assert!(
-        rel(est.slip_zones[1][1], mindlin) < dq / (0.6 * 1000.0),
+        rel(est.slip_zones.right.second, mindlin) < dq / (0.6 * 1000.0),
         "{} vs {mindlin}",
-        est.slip_zones[1][1]
+        est.slip_zones.right.second
     );
 }
 
@@ -124,13 +124,14 @@ fn the_papers_printed_delta_a_sign_does_not_converge() {
         .unwrap()
         .slip_zones
         .unwrap()
-        .right[1];
+        .right
+        .second;
     let est = asymptotic::steady(&c, &cycle).unwrap();
     let [e1, e2] = est.edges;
-    let printed = (e2.shear_intensity[1] - e1.shear_intensity[1]).abs()
+    let printed = (e2.shear_intensity.right - e1.shear_intensity.right).abs()
         / (0.6 * e2.normal_intensity)
         - 0.5 * (e2.half_width - e1.half_width);
-    assert!(rel(est.slip_zones[1][1], exact) < 2e-3);
+    assert!(rel(est.slip_zones.right.second, exact) < 2e-3);
     assert!(
         rel(printed, exact) > 0.1,
         "printed form {printed} vs exact {exact}"
@@ -163,7 +164,10 @@ fn a_sliding_end_is_an_error_not_infinite_intensities() {
     assert!(
         matches!(
             asymptotic::steady(&c, &cycle),
-            Err(halfplane::Error::GrossSliding { point: "first", .. })
+            Err(halfplane::Error::GrossSliding {
+                point: GivenPoint::First,
+                ..
+            })
         ),
         "an end with |Q| >= f P slides: the edge description does not apply"
     );

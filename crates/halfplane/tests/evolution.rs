@@ -4,7 +4,7 @@ mod common;
 use common::*;
 use halfplane::evolution::{evolve, EvolutionWarning, PointState};
 use halfplane::steady::{self, Regime, SteadyOptions};
-use halfplane::{Cycle, Error, Profile};
+use halfplane::{Cycle, Error, Half, Profile};
 use std::f64::consts::PI;
 
 #[test]
@@ -22,7 +22,7 @@ fn hertz_evolution_follows_the_partial_path_closed_form() {
             continue;
         }
         let x = p.load;
-        let (sum, dq, ds) = if p.half == 1 {
+        let (sum, dq, ds) = if p.half == Half::First {
             (
                 lo.normal() + x.normal(),
                 x.shear() - lo.shear(),

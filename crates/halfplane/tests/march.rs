@@ -6,7 +6,7 @@ use halfplane::evolution::evolve;
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions, MarchResult};
 use halfplane::steady::SteadyOptions;
-use halfplane::{closed_form, Contact, Cycle, Error, Profile};
+use halfplane::{closed_form, Contact, Cycle, Error, Half, Profile};
 
 fn run(c: &Contact, rows: &[[f64; 3]], cells: usize) -> MarchResult {
     march(
@@ -622,7 +622,7 @@ fn a_receding_edge_that_is_not_rejected_slips_forward() {
         matches!(
             err,
             Error::SlipReversesInHalf {
-                half: 2,
+                half: Half::Second,
                 edge: Edge::Right,
                 fraction: 0.0,
                 ..

@@ -21,8 +21,8 @@
 //! 1024 cases per property: the whole file takes about 0.6 s in the debug profile (budget ~5 s).
 
 use halfplane::{
-    analyse, asymptotic, evolution, Contact, Cycle, Error, Friction, LoadPoint, Material, Profile,
-    Regime, SteadyOptions, SteadyState,
+    analyse, asymptotic, evolution, Contact, Cycle, Error, Friction, GivenPoint, LoadPoint,
+    Material, Profile, Regime, SteadyOptions, SteadyState,
 };
 use proptest::prelude::*;
 
@@ -112,11 +112,11 @@ fn case() -> impl Strategy<Value = Case> {
 /// The result with the caller's points in the other order, mapped back to the original order.
 fn unswap(s: &SteadyState) -> SteadyState {
     let mut s = s.clone();
-    s.half_width.swap(0, 1);
-    s.criteria.shear_ratio.swap(0, 1);
+    s.half_width.swap();
+    s.criteria.shear_ratio.swap();
     if let Some(z) = s.slip_zones.as_mut() {
-        z.left.swap(0, 1);
-        z.right.swap(0, 1);
+        z.left.swap();
+        z.right.swap();
     }
     s
 }
@@ -144,10 +144,10 @@ fn regime_kind(r: &Regime) -> u8 {
 fn assert_finite(s: &SteadyState) -> Result<(), TestCaseError> {
     let c = &s.criteria;
     let mut values = vec![
-        s.half_width[0],
-        s.half_width[1],
-        c.shear_ratio[0],
-        c.shear_ratio[1],
+        s.half_width.first,
+        s.half_width.second,
+        c.shear_ratio.first,
+        c.shear_ratio.second,
         c.bulk_term,
         c.friction,
     ];
@@ -203,7 +203,7 @@ proptest! {
             (Err(a), Err(Error::SlipReversesInHalf { half, edge, fraction, boundary_rate, limit_rate })) => {
                 // Half 1 runs from the first point as given: swapping renumbers the halves.
                 let b = Error::SlipReversesInHalf {
-                    half: 3 - half,
+                    half: half.other(),
                     edge: *edge,
                     fraction: *fraction,
                     boundary_rate: *boundary_rate,
@@ -228,7 +228,7 @@ proptest! {
             (Ok(a), Ok(b)) => {
                 prop_assert_eq!(a.regime, b.regime);
                 prop_assert_eq!(a.half_width, b.half_width);
-                let tol = 1e-12 * a.half_width[0].max(a.half_width[1]);
+                let tol = 1e-12 * a.half_width.first.max(a.half_width.second);
                 if let (Some(za), Some(zb)) = (a.stick_zone, b.stick_zone) {
                     prop_assert!(
                         close(za.left, -zb.right, tol) && close(za.right, -zb.left, tol),
@@ -238,7 +238,7 @@ proptest! {
                     prop_assert_eq!(a.stick_zone.is_some(), b.stick_zone.is_some());
                 }
                 if let (Some(sa), Some(sb)) = (a.slip_zones, b.slip_zones) {
-                    for i in 0..2 {
+                    for i in GivenPoint::BOTH {
                         prop_assert!(
                             close(sa.left[i], sb.right[i], tol) && close(sa.right[i], sb.left[i], tol),
                             "slip zones {sa:?}, mirrored {sb:?}"
@@ -262,7 +262,7 @@ proptest! {
         match (&given, &reversed) {
             (Ok(a), Ok(b)) => {
                 prop_assert_eq!(a.regime, b.regime);
-                let tol = 1e-12 * a.half_width[0].max(a.half_width[1]);
+                let tol = 1e-12 * a.half_width.first.max(a.half_width.second);
                 if let (Some(za), Some(zb)) = (a.stick_zone, b.stick_zone) {
                     prop_assert!(
                         close(za.left, zb.left, tol) && close(za.right, zb.right, tol),
@@ -270,7 +270,7 @@ proptest! {
                     );
                 }
                 if let (Some(sa), Some(sb)) = (a.slip_zones, b.slip_zones) {
-                    for i in 0..2 {
+                    for i in GivenPoint::BOTH {
                         prop_assert!(
                             close(sa.left[i], sb.left[i], tol) && close(sa.right[i], sb.right[i], tol),
                             "slip zones {sa:?}, reversed {sb:?}"
@@ -309,7 +309,7 @@ proptest! {
     fn partial_slip_stick_zone_lies_inside_the_smaller_contact(case in case()) {
         if let Ok(s) = case.analyse() {
             if s.regime == Regime::PartialSlip {
-                let a_min = s.half_width[0].min(s.half_width[1]);
+                let a_min = s.half_width.first.min(s.half_width.second);
                 let z = s.stick_zone.unwrap();
                 prop_assert!(
                     -a_min < z.left && z.left < z.right && z.right < a_min,
@@ -330,7 +330,7 @@ proptest! {
         let cycle = Cycle::new(case.first, case.second);
         if let Ok(s) = case.analyse() {
             assert_finite(&s)?;
-            let a = s.half_width[0];
+            let a = s.half_width.first;
             let p = case.contact.pressure(a, x * a);
             prop_assert!(matches!(p, Ok(v) if v.is_finite() && v >= 0.0), "p({}) = {p:?}", x * a);
         }

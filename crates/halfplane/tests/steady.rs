@@ -3,7 +3,7 @@
 mod common;
 use common::*;
 use halfplane::steady::{self, Method, Regime, SteadyOptions};
-use halfplane::{closed_form, Contact, Cycle, Error, Profile};
+use halfplane::{closed_form, Contact, Cycle, Error, Half, Profile};
 use std::f64::consts::PI;
 
 fn solve(c: &Contact, cycle: &Cycle) -> halfplane::SteadyState {
@@ -36,8 +36,8 @@ fn hertz_example_matches_the_independent_marching_check() {
     for (got, want, name) in [
         (left, -0.66607, "-m"),
         (right, 0.68123, "n"),
-        (s.half_width[0], 0.76113, "a1"),
-        (s.half_width[1], 0.90059, "a2"),
+        (s.half_width.first, 0.76113, "a1"),
+        (s.half_width.second, 0.90059, "a2"),
         (s.stick_zone.unwrap().half_width(), 0.67365, "d"),
         (s.stick_zone.unwrap().eccentricity(), 0.0075833, "e"),
     ] {
@@ -92,10 +92,10 @@ fn stick_zone_does_not_depend_on_the_order_of_the_points() {
         assert_eq!(zone(&a), zone(&b), "{:?}", c.profile.shape());
         let (sa, sb) = (a.slip_zones.unwrap(), b.slip_zones.unwrap());
         assert_eq!(
-            sa.right[0], sb.right[1],
+            sa.right.first, sb.right.second,
             "slip zones follow the points as given"
         );
-        assert_eq!(a.half_width[0], b.half_width[1]);
+        assert_eq!(a.half_width.first, b.half_width.second);
     }
 }
 
@@ -221,7 +221,7 @@ fn regimes_full_stick_and_gross_sliding() {
     );
     assert_eq!(stick.regime, Regime::FullStick);
     assert!(stick.criteria.full_stick_ratio <= 0.6);
-    assert_eq!(stick.slip_zones.unwrap().right, [0.0, 0.0]);
+    assert_eq!(stick.slip_zones.unwrap().right.to_array(), [0.0, 0.0]);
     let slide = solve(
         &c,
         &Cycle::new(point(1000.0, -250.0, 0.0), point(1400.0, 900.0, 0.0)),
@@ -252,7 +252,7 @@ fn full_stick_boundary_meets_the_partial_slip_solution() {
         &Cycle::new(point(1000.0, -dq / 2.0, 0.0), point(1400.0, dq / 2.0, 0.0)),
     );
     assert_eq!(s.regime, Regime::PartialSlip);
-    assert!(rel(s.stick_zone.unwrap().half_width(), s.half_width[0]) < 1e-8);
+    assert!(rel(s.stick_zone.unwrap().half_width(), s.half_width.first) < 1e-8);
 }
 
 #[test]
@@ -271,7 +271,7 @@ fn cases_outside_the_papers_assumptions_are_named_errors() {
         matches!(
             err,
             Error::SlipReversesInHalf {
-                half: 2,
+                half: Half::Second,
                 edge: halfplane::asymptotic::Edge::Right,
                 fraction: 0.0,
                 ..

@@ -12,7 +12,7 @@ use halfplane::evolution::evolve;
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions, MarchResult};
 use halfplane::steady::{self, Segment, SteadyOptions};
-use halfplane::{Contact, Cycle, Error, Friction, Material, Profile};
+use halfplane::{Contact, Cycle, Error, Friction, Half, Material, Profile};
 use std::f64::consts::PI;
 
 /// Hertz R = 50 with f = 0.3: the reversal cases.
@@ -106,7 +106,7 @@ fn slip_that_reverses_inside_a_half_is_rejected() {
     // Given from point 2, half 1 is the falling half.
     let err = steady::analyse(&c, &Cycle::new(p2, p1), &SteadyOptions::default()).unwrap_err();
     let Error::SlipReversesInHalf {
-        half: 1,
+        half: Half::First,
         edge: Edge::Right,
         fraction,
         boundary_rate,
@@ -142,7 +142,7 @@ fn slip_that_reverses_inside_a_half_is_rejected() {
     assert_eq!(
         other,
         Error::SlipReversesInHalf {
-            half: 2,
+            half: Half::Second,
             edge: Edge::Right,
             fraction,
             boundary_rate,
@@ -183,7 +183,7 @@ fn just_beyond_the_reversal_boundary_is_rejected() {
         matches!(
             err,
             Error::SlipReversesInHalf {
-                half: 1,
+                half: Half::First,
                 edge: Edge::Right,
                 fraction: 0.0,
                 ..
@@ -252,7 +252,7 @@ fn start_of_half_speeds_hold_for_any_profile() {
         let err = steady::check_slip_grows(&c, &Cycle::new(p2, p1), &SteadyOptions::default())
             .unwrap_err();
         let Error::SlipReversesInHalf {
-            half: 1,
+            half: Half::First,
             edge: Edge::Right,
             fraction: 0.0,
             boundary_rate,

@@ -82,7 +82,7 @@ impl EvolveReport {
                 .points
                 .iter()
                 .map(|p| EvolveRow {
-                    half: p.half,
+                    half: p.half.number(),
                     fraction: p.fraction,
                     normal: p.load.normal(),
                     shear: p.load.shear(),

@@ -194,10 +194,10 @@ impl SteadyReport {
         let asymptotic = match (asymptotic, steady.stick_zone, steady.slip_zones) {
             (Some(a), Some(zone), Some(slip)) if steady.regime == Regime::PartialSlip => {
                 let edge = |e: &halfplane::asymptotic::EdgeState| EdgeReport {
-                    shear_intensity_left: e.shear_intensity[0],
-                    shear_intensity_right: e.shear_intensity[1],
-                    equivalent_shear_left: e.equivalent_shear[0],
-                    equivalent_shear_right: e.equivalent_shear[1],
+                    shear_intensity_left: e.shear_intensity.left,
+                    shear_intensity_right: e.shear_intensity.right,
+                    equivalent_shear_left: e.equivalent_shear.left,
+                    equivalent_shear_right: e.equivalent_shear.right,
                 };
                 Some(AsymptoticReport {
                     stick_zone: AsymptoticZone {
@@ -216,12 +216,12 @@ impl SteadyReport {
                     },
                     slip_zones: Edges {
                         left: Pair {
-                            first: Compared::new(a.slip_zones[0][0], slip.left[0]),
-                            second: Compared::new(a.slip_zones[1][0], slip.left[1]),
+                            first: Compared::new(a.slip_zones.left.first, slip.left.first),
+                            second: Compared::new(a.slip_zones.left.second, slip.left.second),
                         },
                         right: Pair {
-                            first: Compared::new(a.slip_zones[0][1], slip.right[0]),
-                            second: Compared::new(a.slip_zones[1][1], slip.right[1]),
+                            first: Compared::new(a.slip_zones.right.first, slip.right.first),
+                            second: Compared::new(a.slip_zones.right.second, slip.right.second),
                         },
                     },
                 })
@@ -243,28 +243,28 @@ impl SteadyReport {
                 "point1"
             },
             criteria: CriteriaReport {
-                shear_ratio_1: c.shear_ratio[0],
-                shear_ratio_2: c.shear_ratio[1],
+                shear_ratio_1: c.shear_ratio.first,
+                shear_ratio_2: c.shear_ratio.second,
                 full_stick_ratio: c.full_stick_ratio.is_finite().then_some(c.full_stick_ratio),
                 shear_range: steady.cycle.shear_range(),
                 bulk_term: c.bulk_term,
                 friction: c.friction,
             },
             contact: ContactReport {
-                half_width_1: steady.half_width[0],
-                half_width_2: steady.half_width[1],
-                normal_intensity_1: contact.normal_intensity(steady.half_width[0])?,
-                normal_intensity_2: contact.normal_intensity(steady.half_width[1])?,
+                half_width_1: steady.half_width.first,
+                half_width_2: steady.half_width.second,
+                normal_intensity_1: contact.normal_intensity(steady.half_width.first)?,
+                normal_intensity_2: contact.normal_intensity(steady.half_width.second)?,
             },
             stick_zone: steady.stick_zone.map(ZoneReport::from),
             slip_zones: steady.slip_zones.map(|s| Edges {
                 left: Pair {
-                    first: s.left[0],
-                    second: s.left[1],
+                    first: s.left.first,
+                    second: s.left.second,
                 },
                 right: Pair {
-                    first: s.right[0],
-                    second: s.right[1],
+                    first: s.right.first,
+                    second: s.right.second,
                 },
             }),
             asymptotic,

@@ -9,7 +9,7 @@
 use crate::closed_form;
 use crate::error::{Error, Result};
 pub use crate::labels::GivenPoint;
-use crate::labels::{display_as_str, PerPoint};
+use crate::labels::{display_as_str, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::profile::Shape;
@@ -112,7 +112,7 @@ display_as_str!(Regime);
 #[non_exhaustive]
 pub struct Criteria {
     /// `|Q|/P` at the first and second points as given (gross sliding when >= f).
-    pub shear_ratio: [f64; 2],
+    pub shear_ratio: PerPoint<f64>,
     /// `(|dQ| + pi a_max |dsigma|/4)/|dP|` (eq. 1; full stick when <= f). Infinite when dP = 0.
     pub full_stick_ratio: f64,
     /// `pi a_max |dsigma|/4`, the bulk-tension term of eq. (1); partial slip is analysed only when
@@ -122,15 +122,9 @@ pub struct Criteria {
     pub friction: f64,
 }
 
-/// Slip-zone extents (lengths from the contact edge to the stick zone) at both ends of the cycle.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct SlipZones {
-    /// Left edge `a_i - m` at the first and second points as given.
-    pub left: [f64; 2],
-    /// Right edge `a_i - n` at the first and second points as given.
-    pub right: [f64; 2],
-}
+/// Slip-zone extents (lengths from the contact edge to the stick zone) at both ends of the cycle:
+/// per edge, then per point as given (`a_i - m` at the left edge, `a_i - n` at the right).
+pub type SlipZones = PerEdge<PerPoint<f64>>;
 
 /// Result of [`analyse`].
 #[derive(Debug, Clone, PartialEq)]
@@ -139,7 +133,7 @@ pub struct SteadyState {
     /// The cycle, labelled by Q.
     pub cycle: Cycle,
     /// Contact half-widths at the first and second points as given.
-    pub half_width: [f64; 2],
+    pub half_width: PerPoint<f64>,
     /// The regime.
     pub regime: Regime,
     /// What decided it.
@@ -206,17 +200,17 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     let (first, second) = cycle.as_given();
     let given = PerPoint { first, second };
     let shear_ratio = given.map(|p| p.shear().abs() / p.normal());
-    let half_width = [
-        contact.half_width(first.normal())?,
-        contact.half_width(second.normal())?,
-    ];
-    let a_max = half_width[0].max(half_width[1]);
-    let a_min = half_width[0].min(half_width[1]);
+    let half_width = PerPoint {
+        first: contact.half_width(first.normal())?,
+        second: contact.half_width(second.normal())?,
+    };
+    let a_max = half_width.first.max(half_width.second);
+    let a_min = half_width.first.min(half_width.second);
     let d_p = cycle.normal_range().abs();
     let d_q = cycle.shear_range();
     let bulk_term = PI * a_max * cycle.bulk_range().abs() / 4.0;
     let criteria = Criteria {
-        shear_ratio: shear_ratio.to_array(),
+        shear_ratio,
         full_stick_ratio: if d_p > 0.0 {
             (d_q + bulk_term) / d_p
         } else {
@@ -245,10 +239,7 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
             left: -a_min,
             right: a_min,
         });
-        state.slip_zones = Some(SlipZones {
-            left: [0.0; 2],
-            right: [0.0; 2],
-        });
+        state.slip_zones = Some(SlipZones::default());
         return Ok(state);
     }
     let segment = Segment::between(&cycle.low(), &cycle.high());
@@ -263,7 +254,7 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     let (m, n) = (-zone.left, zone.right);
     check_slip_grows(contact, cycle, options)?;
     state.stick_zone = Some(zone);
-    state.slip_zones = Some(SlipZones {
+    state.slip_zones = Some(PerEdge {
         left: half_width.map(|a| a - m),
         right: half_width.map(|a| a - n),
     });

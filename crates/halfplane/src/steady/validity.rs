@@ -133,7 +133,7 @@ pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOption
             let equivalent_shear_range = d_q + sign * PI * a_s * d_sigma / 4.0;
             if equivalent_shear_range <= f * d_p.abs() {
                 return Err(Error::SlipReversesInHalf {
-                    half: half.number(),
+                    half,
                     edge,
                     fraction: 0.0,
                     boundary_rate: (f * d_p - equivalent_shear_range) / (2.0 * f * load_rate),
@@ -205,7 +205,7 @@ pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOption
             };
             let q = path.at(fraction, guess)?;
             return Err(Error::SlipReversesInHalf {
-                half: half.number(),
+                half,
                 edge,
                 fraction,
                 boundary_rate: q.boundary_rate[edge],
