@@ -114,15 +114,8 @@ mod tests {
     use super::*;
     use crate::history::Ramp;
     use crate::march::{march, MarchOptions};
-    use crate::{Contact, Friction, LoadPoint, Material, Profile};
-
-    fn contact() -> Contact {
-        Contact::new(
-            Profile::hertz(50.0).unwrap(),
-            Material::new(200_000.0, 0.3).unwrap(),
-            Friction::new(0.6).unwrap(),
-        )
-    }
+    use crate::reference::hertz as contact;
+    use crate::LoadPoint;
 
     fn history() -> History {
         History::in_phase(

@@ -171,15 +171,7 @@ pub fn right_slip_zone(contact: &Contact, cycle: &Cycle) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Material, Profile};
-
-    fn contact() -> Contact {
-        Contact::new(
-            Profile::hertz(50.0).unwrap(),
-            Material::new(200_000.0, 0.3).unwrap(),
-            Friction::new(0.6).unwrap(),
-        )
-    }
+    use crate::reference::hertz as contact;
 
     fn map() -> SlipMap {
         SlipMap {
