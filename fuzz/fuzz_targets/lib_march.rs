@@ -5,8 +5,8 @@
 use arbitrary::Arbitrary;
 use halfplane::history::{History, Ramp};
 use halfplane::march::{self, LinearSolver, MarchOptions};
-use halfplane::{Contact, Friction, LoadPoint, Material};
-use halfplane_fuzz::{check_contact, check_march, check_step, Num, ProfileInput};
+use halfplane::LoadPoint;
+use halfplane_fuzz::{check_march, check_step, fuzzed_contact, Num, ProfileInput};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Debug, Arbitrary)]
@@ -34,15 +34,14 @@ struct Input {
 }
 
 fuzz_target!(|input: Input| {
-    let (Ok(material), Ok(friction), Ok(profile)) = (
-        Material::new(input.youngs_modulus.0, input.poisson_ratio.0),
-        Friction::new(input.friction.0),
-        input.profile.build(),
+    let Some(contact) = fuzzed_contact(
+        input.youngs_modulus,
+        input.poisson_ratio,
+        input.friction,
+        &input.profile,
     ) else {
         return;
     };
-    let contact = Contact::new(profile, material, friction);
-    check_contact(&contact);
     let history = match &input.history {
         HistoryInput::Rows(rows) => {
             let rows: Vec<[f64; 3]> = rows.iter().take(12).map(|r| r.map(|v| v.0)).collect();

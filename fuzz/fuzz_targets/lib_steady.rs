@@ -5,11 +5,9 @@
 
 use arbitrary::Arbitrary;
 use halfplane::steady::Method;
-use halfplane::{
-    analyse, asymptotic, evolution, Contact, Cycle, Friction, LoadPoint, Material, SteadyOptions,
-};
+use halfplane::{analyse, asymptotic, evolution, Cycle, LoadPoint, SteadyOptions};
 use halfplane_fuzz::{
-    check_asymptotic, check_contact, check_evolution, check_half_width, check_steady,
+    check_asymptotic, check_evolution, check_half_width, check_steady, fuzzed_contact,
     sticks_at_both_ends, Num, ProfileInput,
 };
 use libfuzzer_sys::fuzz_target;
@@ -27,15 +25,14 @@ struct Input {
 }
 
 fuzz_target!(|input: Input| {
-    let (Ok(material), Ok(friction), Ok(profile)) = (
-        Material::new(input.youngs_modulus.0, input.poisson_ratio.0),
-        Friction::new(input.friction.0),
-        input.profile.build(),
+    let Some(contact) = fuzzed_contact(
+        input.youngs_modulus,
+        input.poisson_ratio,
+        input.friction,
+        &input.profile,
     ) else {
         return;
     };
-    let contact = Contact::new(profile, material, friction);
-    check_contact(&contact);
     let mut loads = Vec::new();
     for (i, p) in input.points.iter().enumerate() {
         let normal = p[0].0;

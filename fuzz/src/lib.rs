@@ -11,7 +11,7 @@ use arbitrary::{Arbitrary, Result, Unstructured};
 use halfplane::asymptotic::AsymptoticSteady;
 use halfplane::evolution::Evolution;
 use halfplane::march::{Fields, MarchResult, StepReport};
-use halfplane::{Contact, Profile, SteadyState};
+use halfplane::{Contact, Friction, Material, Profile, SteadyState};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -131,6 +131,23 @@ impl ProfileInput {
 
 fn finite(what: &str, v: f64, context: &dyn std::fmt::Debug) {
     assert!(v.is_finite(), "{what} = {v} is not finite in {context:?}");
+}
+
+/// The contact built from fuzzed constants, checked, or `None` when the library rejects any of
+/// them (a typed error is a pass).
+pub fn fuzzed_contact(
+    youngs_modulus: Num,
+    poisson_ratio: Num,
+    friction: Num,
+    profile: &ProfileInput,
+) -> Option<Contact> {
+    let contact = Contact::new(
+        profile.build().ok()?,
+        Material::new(youngs_modulus.0, poisson_ratio.0).ok()?,
+        Friction::new(friction.0).ok()?,
+    );
+    check_contact(&contact);
+    Some(contact)
 }
 
 /// A contact half-width returned as `Ok`: finite and > 0.
