@@ -230,6 +230,24 @@ pub enum Error {
         /// Size of the last step relative to the scale of the unknowns.
         last_step: f64,
     },
+
+    /// A textual setting (an environment variable, a name) has a value that cannot be read.
+    #[error("invalid {field} = {value:?}: must be {valid}")]
+    InvalidText {
+        /// Name of the setting.
+        field: String,
+        /// The rejected text.
+        value: String,
+        /// What would be valid, in words.
+        valid: &'static str,
+    },
+
+    /// The worker pool of a batch could not be started (the system refused the threads).
+    #[error("could not start the worker threads: {message}")]
+    ThreadPool {
+        /// What the system said.
+        message: String,
+    },
 }
 
 /// Shorthand used throughout the crate.

@@ -22,7 +22,7 @@
 //! # Ok::<(), halfplane::Error>(())
 //! ```
 //!
-//! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
+//! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
 //! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`closed_form`]
@@ -30,6 +30,7 @@
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
+pub mod batch;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;

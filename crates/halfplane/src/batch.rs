@@ -1,0 +1,337 @@
+//! Many independent analyses at once: the engine behind Python's `steady_batch` and the CLI's
+//! `sweep`.
+//!
+//! Cases are solved on a rayon pool in chunks. Each chunk's results are handed to a sink, in row
+//! order, before the next chunk starts, so an output of any length is streamed with at most one
+//! chunk in memory, and the sink (or a caller's interrupt check inside it) may stop the run between
+//! chunks. A case that fails is a row carrying its error, never an abort of the batch. Results do
+//! not depend on the number of threads: every row is solved by the same sequential code.
+
+use crate::error::{Error, Result};
+use crate::labels::{PerEdge, PerPoint};
+use crate::steady::{self, Regime, SteadyOptions, SteadyState};
+use crate::{Contact, Cycle};
+use rayon::prelude::*;
+use std::ops::ControlFlow;
+
+/// The environment variable that sizes the pool when no thread count is given.
+pub const THREADS_VARIABLE: &str = "HALFPLANE_NUM_THREADS";
+
+/// Rows solved between two calls of the sink when [`Batch::with_chunk_rows`] is not used: large
+/// enough that scheduling costs nothing measurable, small enough that an interrupt is seen within
+/// a fraction of a second and memory stays a few megabytes.
+pub const DEFAULT_CHUNK_ROWS: usize = 16_384;
+
+/// Largest thread count accepted (far above any machine; it bounds the pool's allocation).
+pub const MAX_THREADS: usize = 4096;
+
+/// How a batch is run: the pool size and the chunk length.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Batch {
+    threads: Option<usize>,
+    chunk_rows: usize,
+}
+
+impl Batch {
+    /// A batch on `threads` workers, or, for `None`, on the count in [`THREADS_VARIABLE`] if it
+    /// is set, else on every core.
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] for a thread count (given or from the environment) outside
+    /// 1..=[`MAX_THREADS`], or an environment value that is not a whole number.
+    pub fn new(threads: Option<usize>) -> Result<Self> {
+        let threads = match threads {
+            Some(n) => Some(check_threads("threads", n as u64)?),
+            None => threads_from_environment()?,
+        };
+        Ok(Self {
+            threads,
+            chunk_rows: DEFAULT_CHUNK_ROWS,
+        })
+    }
+
+    /// The same batch with `rows` rows per chunk (1 to 2^24).
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] outside that range.
+    pub fn with_chunk_rows(self, rows: usize) -> Result<Self> {
+        const MAX_CHUNK: u64 = 1 << 24;
+        if rows == 0 || rows as u64 > MAX_CHUNK {
+            return Err(Error::InvalidCount {
+                field: "chunk_rows".into(),
+                value: rows as u64,
+                min: 1,
+                max: MAX_CHUNK,
+            });
+        }
+        Ok(Self {
+            chunk_rows: rows,
+            ..self
+        })
+    }
+
+    /// The thread count asked for (`None`: every core).
+    pub fn threads(&self) -> Option<usize> {
+        self.threads
+    }
+
+    /// Rows per chunk.
+    pub fn chunk_rows(&self) -> usize {
+        self.chunk_rows
+    }
+
+    /// Solves rows `0..rows` with `solve(row)` and hands each chunk's results, in row order, to
+    /// `sink(first_row, results)`. The sink may return [`ControlFlow::Break`] to stop; the run then
+    /// returns the break value without solving further chunks.
+    ///
+    /// # Errors
+    /// [`Error::ThreadPool`] if the pool cannot be started.
+    pub fn run<O, B>(
+        &self,
+        rows: usize,
+        solve: impl Fn(usize) -> O + Sync,
+        mut sink: impl FnMut(usize, Vec<O>) -> ControlFlow<B>,
+    ) -> Result<Option<B>>
+    where
+        O: Send,
+    {
+        let mut builder = rayon::ThreadPoolBuilder::new();
+        if let Some(n) = self.threads {
+            builder = builder.num_threads(n);
+        }
+        let pool = builder.build().map_err(|e| Error::ThreadPool {
+            message: e.to_string(),
+        })?;
+        let mut first = 0;
+        while first < rows {
+            let end = rows.min(first.saturating_add(self.chunk_rows));
+            let results: Vec<O> =
+                pool.install(|| (first..end).into_par_iter().map(&solve).collect());
+            if let ControlFlow::Break(value) = sink(first, results) {
+                return Ok(Some(value));
+            }
+            first = end;
+        }
+        Ok(None)
+    }
+}
+
+fn check_threads(field: &str, n: u64) -> Result<usize> {
+    if n == 0 || n > MAX_THREADS as u64 {
+        return Err(Error::InvalidCount {
+            field: field.into(),
+            value: n,
+            min: 1,
+            max: MAX_THREADS as u64,
+        });
+    }
+    Ok(n as usize)
+}
+
+fn threads_from_environment() -> Result<Option<usize>> {
+    match std::env::var_os(THREADS_VARIABLE) {
+        Some(text) => threads_from_text(&text.to_string_lossy()),
+        None => Ok(None),
+    }
+}
+
+/// Reads [`THREADS_VARIABLE`]'s value: blank means unset.
+fn threads_from_text(text: &str) -> Result<Option<usize>> {
+    let text = text.trim();
+    if text.is_empty() {
+        return Ok(None);
+    }
+    match text.parse::<u64>() {
+        Ok(n) => check_threads(THREADS_VARIABLE, n).map(Some),
+        Err(_) => Err(Error::InvalidText {
+            field: THREADS_VARIABLE.into(),
+            value: text.into(),
+            valid: "a whole number of threads from 1 to 4096",
+        }),
+    }
+}
+
+/// The columns of a steady summary row, in output order (a public interface: scripts depend on
+/// these names). `error` is last: empty when the analysis succeeded.
+pub const STEADY_COLUMNS: [&str; 10] = [
+    "regime",
+    "stick_left",
+    "stick_right",
+    "half_width_1",
+    "half_width_2",
+    "slip_left_1",
+    "slip_left_2",
+    "slip_right_1",
+    "slip_right_2",
+    "error",
+];
+
+/// One case's steady state in the few numbers a design map needs. Points are as given (1, 2);
+/// lengths in the case's length unit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadySummary {
+    regime: Regime,
+    half_width: PerPoint<f64>,
+    stick_zone: Option<(f64, f64)>,
+    slip_zones: Option<PerEdge<PerPoint<f64>>>,
+}
+
+impl SteadySummary {
+    /// The summary of an analysed state.
+    pub fn of(state: &SteadyState) -> Self {
+        Self {
+            regime: state.regime,
+            half_width: state.half_width,
+            stick_zone: state.stick_zone.map(|z| (z.left, z.right)),
+            slip_zones: state.slip_zones,
+        }
+    }
+
+    /// The regime.
+    pub fn regime(&self) -> Regime {
+        self.regime
+    }
+
+    /// The eight numbers of [`STEADY_COLUMNS`] after `regime` and before `error`: stick zone ends
+    /// (NaN in gross sliding), half-widths at points 1 and 2, slip zones left 1, 2, right 1, 2
+    /// (NaN in gross sliding, 0 in full stick).
+    pub fn numbers(&self) -> [f64; 8] {
+        let (left, right) = self.stick_zone.unwrap_or((f64::NAN, f64::NAN));
+        let nan = PerPoint {
+            first: f64::NAN,
+            second: f64::NAN,
+        };
+        let slip = self.slip_zones.unwrap_or(PerEdge {
+            left: nan,
+            right: nan,
+        });
+        [
+            left,
+            right,
+            self.half_width.first,
+            self.half_width.second,
+            slip.left.first,
+            slip.left.second,
+            slip.right.first,
+            slip.right.second,
+        ]
+    }
+}
+
+/// The steady analysis of one case, summarised ([`steady::analyse`] then [`SteadySummary::of`]).
+///
+/// # Errors
+/// Every error of [`steady::analyse`].
+pub fn steady_summary(
+    contact: &Contact,
+    cycle: &Cycle,
+    options: &SteadyOptions,
+) -> Result<SteadySummary> {
+    steady::analyse(contact, cycle, options).map(|state| SteadySummary::of(&state))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference;
+
+    #[test]
+    fn rows_come_back_in_order_whatever_the_threads_and_chunks() {
+        let expected: Vec<u64> = (0..1000u64).map(|i| i * i).collect();
+        for (threads, chunk) in [(1, 7), (2, 1000), (3, 64), (8, 1)] {
+            let batch = Batch::new(Some(threads))
+                .and_then(|b| b.with_chunk_rows(chunk))
+                .expect("valid batch");
+            let mut got = Vec::new();
+            let stopped = batch
+                .run(
+                    1000,
+                    |i| (i as u64) * (i as u64),
+                    |first, part| {
+                        assert_eq!(first, got.len(), "chunks arrive in row order");
+                        got.extend(part);
+                        ControlFlow::<()>::Continue(())
+                    },
+                )
+                .expect("pool starts");
+            assert_eq!(stopped, None);
+            assert_eq!(got, expected, "{threads} threads, chunks of {chunk}");
+        }
+    }
+
+    #[test]
+    fn the_sink_stops_the_run_between_chunks() {
+        let batch = Batch::new(Some(2))
+            .and_then(|b| b.with_chunk_rows(10))
+            .expect("valid");
+        let mut seen = 0;
+        let stopped = batch
+            .run(
+                100,
+                |i| i,
+                |_, part| {
+                    seen += part.len();
+                    if seen >= 30 {
+                        ControlFlow::Break(seen)
+                    } else {
+                        ControlFlow::Continue(())
+                    }
+                },
+            )
+            .expect("pool starts");
+        assert_eq!(stopped, Some(30), "three chunks solved, then stopped");
+    }
+
+    #[test]
+    fn bad_thread_counts_name_the_field() {
+        for n in [0, MAX_THREADS + 1] {
+            match Batch::new(Some(n)) {
+                Err(Error::InvalidCount { field, value, .. }) => {
+                    assert_eq!((field.as_str(), value), ("threads", n as u64))
+                }
+                other => panic!("threads = {n} accepted: {other:?}"),
+            }
+        }
+        assert!(matches!(
+            threads_from_text("many"),
+            Err(Error::InvalidText { field, .. }) if field == THREADS_VARIABLE
+        ));
+        assert!(matches!(
+            threads_from_text("0"),
+            Err(Error::InvalidCount { .. })
+        ));
+        assert_eq!(threads_from_text(" 3 ").ok(), Some(Some(3)));
+        assert_eq!(threads_from_text("").ok(), Some(None));
+        assert!(Batch::new(Some(1))
+            .and_then(|b| b.with_chunk_rows(0))
+            .is_err());
+    }
+
+    #[test]
+    fn a_summary_carries_the_steady_state_numbers() {
+        let (contact, cycle) = (reference::hertz(), reference::cycle());
+        let state = steady::analyse(&contact, &cycle, &SteadyOptions::default()).expect("solves");
+        let summary = steady_summary(&contact, &cycle, &SteadyOptions::default()).expect("solves");
+        let zone = state.stick_zone.expect("partial slip");
+        let slip = state.slip_zones.expect("partial slip");
+        assert_eq!(summary.regime(), Regime::PartialSlip);
+        assert_eq!(
+            summary.numbers(),
+            [
+                zone.left,
+                zone.right,
+                state.half_width.first,
+                state.half_width.second,
+                slip.left.first,
+                slip.left.second,
+                slip.right.first,
+                slip.right.second,
+            ]
+        );
+        assert_eq!(
+            STEADY_COLUMNS.len(),
+            summary.numbers().len() + 2,
+            "regime and error"
+        );
+    }
+}
