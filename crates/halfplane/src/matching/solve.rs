@@ -62,6 +62,7 @@ fn matched_normal(
 /// `S' = S sqrt(a'/a)` at each edge (eq. (33)). Sign convention of [`crate::asymptotic`].
 ///
 /// `start` is the half-width the `K_N` search starts from (the prototype's when `None`).
+/// Returns the test load (named by `index` in errors) and its contact half-width `a'`.
 /// Errors: [`Error::MatchNotBracketed`], or the edge description's own (`K_N` not > 0).
 pub fn map_point(
     prototype: &Contact,
