@@ -30,6 +30,9 @@ pub enum Command {
     /// Numerical time marching through the load history in [history]: stick zones, tractions,
     /// slip and dissipated energy at every increment, slip amplitude per cycle.
     March(MarchArgs),
+    /// Finds the loads at which a test geometry reproduces the prototype's contact-edge state
+    /// (K_N, K_T, slip zones), writes the test case and prints prototype against test.
+    Match(MatchArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
     #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
@@ -126,6 +129,9 @@ pub enum PlotCommand {
     MarchFields(MarchFieldsArgs),
     /// Stick intervals against increment number (needs [history]).
     MarchZones(MarchZonesArgs),
+    /// Load spaces of a prototype and its matched test side by side, with the P-S paths of both
+    /// edges (needs [cycle]; test geometry options as `halfplane match`).
+    Match(MatchFigureArgs),
 }
 
 /// What every figure takes: the case and the output file.
@@ -191,6 +197,74 @@ pub struct MarchZonesArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+}
+
+/// The profile kinds a matched test may have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TestProfile {
+    /// Parabolic, needs --radius.
+    Hertz,
+    /// Flat punch with rounded edges, needs --flat-half-width and --radius.
+    FlatRounded,
+    /// g = B|x|^k, needs --coefficient and --exponent.
+    PowerLaw,
+}
+
+/// The test geometry and how to match it (shared by `match` and `plot match`).
+#[derive(Args, Debug)]
+pub struct TestArgs {
+    /// The test's profile kind.
+    #[arg(long, value_enum)]
+    pub profile: TestProfile,
+    /// hertz: radius R; flat-rounded: edge radius R (length).
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    /// flat-rounded: flat half-width b >= 0 (length).
+    #[arg(long, allow_hyphen_values = true)]
+    pub flat_half_width: Option<f64>,
+    /// power-law: B > 0 in g = B|x|^k.
+    #[arg(long, allow_hyphen_values = true)]
+    pub coefficient: Option<f64>,
+    /// power-law: k in g = B|x|^k, 1 <= k <= 64 (k = 1.5 has one K_N at every load: no match).
+    #[arg(long, allow_hyphen_values = true)]
+    pub exponent: Option<f64>,
+    /// The test's Young's modulus E (default: the prototype's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub youngs_modulus: Option<f64>,
+    /// The test's Poisson's ratio (default: the prototype's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub poisson_ratio: Option<f64>,
+    /// The test's friction coefficient f (default: the prototype's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    /// Exact match: K_N at both points, the exact slip zones at both edges at point2, the mean
+    /// K_T over the points at each edge (default: K_N at both points and K_T at both edges at
+    /// both points, the asymptotic match).
+    #[arg(long)]
+    pub exact: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct MatchArgs {
+    /// The prototype's case file (TOML) with [material], [friction], [profile] and [cycle] (and
+    /// optionally [history], [solver], [units], carried over to the test).
+    pub case: PathBuf,
+    #[command(flatten)]
+    pub test: TestArgs,
+    /// The test case file to write (TOML), accepted by `steady`, `evolve` and `march`.
+    #[arg(long, short)]
+    pub output: PathBuf,
+    /// Print the report as one JSON object instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct MatchFigureArgs {
+    #[command(flatten)]
+    pub figure: FigureArgs,
+    #[command(flatten)]
+    pub test: TestArgs,
 }
 
 /// For an unknown command or figure, a line naming the valid ones (clap's message names only

@@ -8,8 +8,10 @@
 //! march recorders ([`MarchedCycle`], [`FieldRecorder`], [`StepFields`]) live in
 //! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
+mod matching;
 mod render;
 
+pub use matching::match_figure;
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 
 pub use halfplane::record::{FieldRecorder, MarchedCycle, StepFields};

@@ -403,3 +403,49 @@ fn bad_requests_are_clear_errors() {
     // A history without cycles has no last cycle to overlay.
     assert_eq!(MarchedCycle::last_cycle(&result, &history), None);
 }
+
+#[test]
+fn match_figure_draws_both_sides_with_the_reports_edge_shears() {
+    use halfplane::matching::{match_cycle, Mode};
+    let report = match_cycle(
+        &reference::flat_rounded(),
+        &cycle(),
+        &contact(),
+        Mode::Exact,
+    )
+    .unwrap();
+    let f = match_figure(&report, &units()).unwrap();
+    assert_eq!(f.panels.len(), 2, "prototype and test side by side");
+    for (panel, side) in f.panels.iter().zip([&report.prototype, &report.test]) {
+        // The P-S paths of both edges run from S at the first point to S at the second, as the
+        // report's edge description gives them (eq. (33)).
+        for (name, edge) in [
+            ("S left", halfplane::Edge::Left),
+            ("S right", halfplane::Edge::Right),
+        ] {
+            let s = panel
+                .series
+                .iter()
+                .find(|s| s.name.starts_with(name))
+                .unwrap();
+            let path = &s.pieces[0];
+            let ends = [path[0], path[path.len() - 1]];
+            let loads = side.cycle.as_given();
+            let given = [(loads.0, side.edges.first), (loads.1, side.edges.second)];
+            for ((p, sh), (load, e)) in ends.iter().zip(given) {
+                assert_eq!(
+                    *p,
+                    load.normal(),
+                    "{}: {name} starts and ends at the points' P",
+                    panel.title
+                );
+                assert!(
+                    (sh - e.equivalent_shear[edge]).abs() < 1e-9,
+                    "{}: {name}",
+                    panel.title
+                );
+            }
+        }
+    }
+    check_svg(&f);
+}

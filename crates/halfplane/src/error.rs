@@ -2,6 +2,7 @@
 //! caller (CLI, Python binding, sweep driver) can report it without string parsing.
 
 use crate::labels::{Edge, GivenPoint, Half};
+use crate::matching::{LoadIndex, MatchConstraint, MatchSide};
 use thiserror::Error;
 
 /// Everything that can go wrong in the library. Messages state the problem and what would be
@@ -248,6 +249,45 @@ pub enum Error {
         /// What the system said.
         message: String,
     },
+
+    /// Prototype-to-test matching ([`crate::matching`]) found no valid test: the prototype's
+    /// cycle, or the test cycle the matching equations give, fails `constraint`.
+    #[error(
+        "no valid test: the {side}'s cycle fails the {constraint} constraint{}",
+        Error::cause_text(.cause)
+    )]
+    NoValidMatch {
+        /// Whose cycle fails.
+        side: MatchSide,
+        /// What it fails.
+        constraint: MatchConstraint,
+        /// The analysis's own error, where there is one.
+        cause: Option<Box<Error>>,
+    },
+
+    /// No test contact half-width gives the prototype's edge pressure intensity `K_N`.
+    #[error(
+        "no valid test: no test contact has the prototype's K_N = {target:.6e} at {load} (no solution bracketed \
+         between contact half-widths {:.6e} and {:.6e}; K_N of the test profile does not reach it)",
+        .searched[0], .searched[1]
+    )]
+    MatchNotBracketed {
+        /// The load being matched.
+        load: LoadIndex,
+        /// The prototype's `K_N` there.
+        target: f64,
+        /// The smallest and largest test half-widths tried.
+        searched: [f64; 2],
+    },
+}
+
+impl Error {
+    /// `": cause"` for [`Error::NoValidMatch`]'s message, empty without one.
+    fn cause_text(cause: &Option<Box<Error>>) -> String {
+        cause
+            .as_ref()
+            .map_or_else(String::new, |c| format!(": {c}"))
+    }
 }
 
 /// Shorthand used throughout the crate.

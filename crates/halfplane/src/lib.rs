@@ -24,7 +24,7 @@
 //!
 //! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
-//! (edge description), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
+//! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
 //! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`closed_form`]
 //! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
@@ -37,12 +37,14 @@ pub mod evolution;
 pub mod history;
 pub mod labels;
 pub mod load;
+pub mod matching;
 pub mod material;
 pub mod normal;
 pub mod profile;
 mod quadrature;
 pub mod record;
 pub mod reference;
+mod roots;
 pub mod slip_map;
 mod spline;
 pub mod steady;

@@ -3,6 +3,7 @@
 
 pub mod evolve;
 pub mod march;
+pub mod matching;
 pub mod plot;
 pub mod steady;
 
@@ -15,6 +16,7 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Steady(a) => steady::run(&steady::SteadyConfig::resolve(a)?),
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
+        Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
     }
 }
@@ -30,6 +32,14 @@ pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
             "this cycle is outside the steady-state analysis; `halfplane march` (numerical time \
              marching) has no such restriction: give the case a [history] section with \
              kind = \"cycle\"",
+        ),
+        Error::NoValidMatch {
+            side: halfplane::matching::MatchSide::Test,
+            ..
+        }
+        | Error::MatchNotBracketed { .. } => Some(
+            "choose another test geometry (for a Hertz test a different --radius gives another \
+             contact size at the same K_N) or the other match mode (--exact)",
         ),
         _ => None,
     }

@@ -6,6 +6,7 @@ use crate::output::note;
 use anyhow::{anyhow, bail, Result};
 use halfplane::history::History;
 use halfplane::march::{self, MarchOptions};
+use halfplane::matching::Mode;
 use halfplane::{Contact, Cycle};
 use halfplane_plot::{FieldRecorder, MarchedCycle, SlipMap, Units};
 use std::path::PathBuf;
@@ -61,6 +62,15 @@ pub enum FigureConfig {
         history: History,
         /// `[solver]` with `--cells` applied.
         options: MarchOptions,
+    },
+    /// The load spaces of the prototype (the case) and its matched test.
+    Match {
+        /// The prototype's cycle of `[cycle]`.
+        cycle: Cycle,
+        /// The test contact.
+        test: Contact,
+        /// Asymptotic or exact.
+        mode: Mode,
     },
 }
 
@@ -127,6 +137,13 @@ impl PlotConfig {
                     case,
                     FigureConfig::MarchZones { history, options },
                 )
+            }
+            PlotCommand::Match(a) => {
+                let case = load(&a.figure)?;
+                let cycle = case.cycle()?;
+                let test = super::matching::test_contact(&a.test, &case.contact)?;
+                let mode = super::matching::mode(&a.test);
+                (&a.figure, case, FigureConfig::Match { cycle, test, mode })
             }
         };
         Ok(Self {
@@ -217,6 +234,10 @@ pub fn run(config: &PlotConfig) -> Result<()> {
         FigureConfig::MarchZones { history, options } => {
             let result = march::march(contact, history, options, |_, _| {})?;
             halfplane_plot::march_zones_figure(&result, units)
+        }
+        FigureConfig::Match { cycle, test, mode } => {
+            let report = halfplane::matching::match_cycle(contact, cycle, test, *mode)?;
+            halfplane_plot::match_figure(&report, units)?
         }
     };
     halfplane_plot::write(&fig, &config.output)?;

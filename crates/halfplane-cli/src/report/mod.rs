@@ -4,6 +4,7 @@
 
 pub mod evolve;
 pub mod march;
+pub mod matching;
 pub mod steady;
 
 use crate::units::{Quantity, Units};

@@ -27,8 +27,9 @@ pub struct SteadyReport {
 }
 
 #[derive(Serialize)]
-struct ProfileReport {
-    kind: &'static str,
+pub(crate) struct ProfileReport {
+    /// The profile kind, as the case file names it.
+    pub(crate) kind: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     radius: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -146,7 +147,8 @@ fn row(o: &mut String, label: &str, a: f64, b: f64, note: &str) {
     let _ = writeln!(o, "{label:<15}{a:>14.6} {b:>14.6}{note}");
 }
 
-fn profile_report(contact: &Contact) -> ProfileReport {
+/// The profile as the reports show it.
+pub(crate) fn profile_report(contact: &Contact) -> ProfileReport {
     let mut r = ProfileReport {
         kind: "",
         radius: None,
