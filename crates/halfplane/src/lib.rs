@@ -25,7 +25,8 @@
 //! Modules, one per concept: [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
-//! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`closed_form`]
+//! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`stress`]
+//! (stresses below the contact), [`closed_form`]
 //! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
@@ -45,6 +46,7 @@ pub mod reference;
 pub mod slip_map;
 mod spline;
 pub mod steady;
+pub mod stress;
 
 pub use error::{Error, Result};
 pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};
