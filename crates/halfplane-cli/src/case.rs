@@ -511,7 +511,7 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
 ///
 /// The file is read a line at a time, so a file with too many rows is rejected without holding
 /// it: memory stays proportional to the rows kept.
-fn read_csv(
+pub(crate) fn read_csv(
     path: &Path,
     field: &str,
     columns: &[&str],

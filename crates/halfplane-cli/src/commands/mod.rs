@@ -5,6 +5,7 @@ pub mod evolve;
 pub mod march;
 pub mod plot;
 pub mod steady;
+pub mod stress;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -15,6 +16,7 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Steady(a) => steady::run(&steady::SteadyConfig::resolve(a)?),
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
+        Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
     }
 }

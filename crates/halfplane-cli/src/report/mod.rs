@@ -5,6 +5,7 @@
 pub mod evolve;
 pub mod march;
 pub mod steady;
+pub mod stress;
 
 use crate::units::{Quantity, Units};
 use std::fmt::Write;

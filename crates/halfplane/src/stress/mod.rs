@@ -30,9 +30,11 @@
 
 pub mod closed_form;
 mod edge;
+mod marched;
 mod strip;
 mod traction;
 
+pub use marched::{marched, MarchedTraction};
 pub use traction::{Traction, MAX_NODES};
 
 use crate::error::{physical, Error, Result};
@@ -119,12 +121,13 @@ fn point(t: &Traction, bulk: f64, nu: f64, index: usize, x: f64, z: f64) -> Resu
         value: x,
         valid: "a surface point away from a jump of the traction (the stress is infinite there)",
     })?;
-    let sxx = sxx + bulk;
+    // Adding +0.0 turns a signed zero into +0 (no "-0" in the output).
+    let sxx = sxx + bulk + 0.0;
     Ok(Stress {
         sxx,
-        szz,
-        syy: nu * (sxx + szz),
-        sxz,
+        szz: szz + 0.0,
+        syy: nu * (sxx + szz) + 0.0,
+        sxz: sxz + 0.0,
     })
 }
 
