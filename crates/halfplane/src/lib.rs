@@ -26,7 +26,7 @@
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
 //! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`stress`]
-//! (stresses below the contact), [`closed_form`]
+//! (stresses below the contact), [`fatigue`] (initiation parameters over the steady cycle), [`closed_form`]
 //! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
@@ -34,6 +34,7 @@ pub mod asymptotic;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;
+pub mod fatigue;
 pub mod history;
 pub mod labels;
 pub mod load;
