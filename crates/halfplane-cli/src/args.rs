@@ -33,6 +33,9 @@ pub enum Command {
     /// Stresses below the contact (x, z with z the depth into the body that carries the bulk
     /// tension) at a marched increment: sxx, szz, syy, sxz at the points of --at or on --grid.
     Stress(StressArgs),
+    /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
+    /// Crossland, Ruiz F1/F2; critical distances and lives with the constants of [fatigue]).
+    Fatigue(FatigueArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
     #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
@@ -141,6 +144,19 @@ pub struct StressArgs {
     #[arg(long)]
     pub cells: Option<usize>,
     // csv and table: one row per point, columns x,z,sxx,szz,syy,sxz.
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct FatigueArgs {
+    /// Case file (TOML) with [material], [friction], [profile], a cyclic [history] and
+    /// optionally [fatigue], [solver] and [units].
+    pub case: PathBuf,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+    // csv and table: one row per parameter.
     #[command(flatten)]
     pub format: FormatArgs,
 }

@@ -3,6 +3,7 @@
 //! quantity (for the unit label) and the table format, and reads its cell from the row.
 
 pub mod evolve;
+pub mod fatigue;
 pub mod march;
 pub mod steady;
 pub mod stress;
