@@ -33,6 +33,12 @@ pub enum Command {
     /// Finds the loads at which a test geometry reproduces the prototype's contact-edge state
     /// (K_N, K_T, slip zones), writes the test case and prints prototype against test.
     Match(MatchArgs),
+    /// Stresses below the contact (x, z with z the depth into the body that carries the bulk
+    /// tension) at a marched increment: sxx, szz, syy, sxz at the points of --at or on --grid.
+    Stress(StressArgs),
+    /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
+    /// Crossland, Ruiz F1/F2; critical distances and lives with the constants of [fatigue]).
+    Fatigue(FatigueArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
     #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
@@ -114,6 +120,48 @@ pub struct MarchArgs {
     /// Cells across the largest contact (overrides [solver] cells; default 400).
     #[arg(long)]
     pub cells: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct StressArgs {
+    /// Case file (TOML) with [material], [friction], [profile], [history] and optionally
+    /// [solver] and [units].
+    pub case: PathBuf,
+    /// Points file (CSV) with the header x,z (z >= 0, the depth); one output row per point, in
+    /// order.
+    #[arg(
+        long,
+        value_name = "POINTS.csv",
+        required_unless_present = "grid",
+        conflicts_with = "grid"
+    )]
+    pub at: Option<PathBuf>,
+    /// A grid instead of --at: X0,X1,NX,Z0,Z1,NZ (NX x NZ evenly spaced points, ends included;
+    /// rows run along x, one depth after another).
+    #[arg(long, value_name = "X0,X1,NX,Z0,Z1,NZ", allow_hyphen_values = true)]
+    pub grid: Option<String>,
+    /// March increment whose state is used (1-based; default: the last).
+    #[arg(long)]
+    pub step: Option<usize>,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+    // csv and table: one row per point, columns x,z,sxx,szz,syy,sxz.
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct FatigueArgs {
+    /// Case file (TOML) with [material], [friction], [profile], a cyclic [history] and
+    /// optionally [fatigue], [solver] and [units].
+    pub case: PathBuf,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+    // csv and table: one row per parameter.
+    #[command(flatten)]
+    pub format: FormatArgs,
 }
 
 /// The figures `halfplane plot` draws, each with its own options.

@@ -94,6 +94,7 @@ struct RawCase {
     history: Option<RawHistory>,
     solver: Option<RawSolver>,
     units: Option<crate::units::RawUnits>,
+    fatigue: Option<toml::Table>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -178,6 +179,8 @@ pub struct Case {
     pub solver: MarchOptions,
     /// The unit names of `[units]` (default N, mm, MPa), for labels only.
     pub units: crate::units::Units,
+    /// `[fatigue]` as written, resolved by the `fatigue` command.
+    pub fatigue: Option<toml::Table>,
 }
 
 impl Case {
@@ -309,6 +312,7 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         history,
         solver,
         units: crate::units::Units::resolve(raw.units)?,
+        fatigue: raw.fatigue,
     })
 }
 
@@ -507,11 +511,9 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
 /// Reads a CSV whose header names `columns`, at most `max_rows` data rows; blank lines and lines
 /// starting with `#` are skipped, a UTF-8 byte-order mark and CRLF line ends (a spreadsheet's
 /// "CSV UTF-8") are accepted. Returns the values row after row (`columns.len()` per row) and
-/// the file line of each row (for errors). `field` names the case-file field that gave the path.
-///
-/// The file is read a line at a time, so a file with too many rows is rejected without holding
-/// it: memory stays proportional to the rows kept.
-fn read_csv(
+/// the file line of each row (for errors); `field` names the field that gave the path. Read
+/// a line at a time: a file with too many rows is rejected without holding it.
+pub(crate) fn read_csv(
     path: &Path,
     field: &str,
     columns: &[&str],

@@ -219,6 +219,13 @@ pub enum Error {
         index: usize,
     },
 
+    /// A computation over the steady cycle was given a history without cycles.
+    #[error("the {what} needs a cyclic history (kind = \"cycle\" or \"harmonic\"): its last cycle is taken as the steady cycle")]
+    NoCycle {
+        /// What needed the cycle.
+        what: &'static str,
+    },
+
     /// An iterative solve did not reach its tolerance.
     #[error(
         "{what} did not converge in {iterations} iterations (last relative step {last_step:e})"

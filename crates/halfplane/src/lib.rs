@@ -24,8 +24,10 @@
 //!
 //! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
-//! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone along the cycle), [`slip_map`] (the slip-zone
-//! map of the paper's Figure 5), [`record`] (recorders for the marching solver), [`closed_form`]
+//! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone
+//! along the cycle), [`slip_map`] (the slip-zone map of the paper's Figure 5), [`record`]
+//! (recorders for the marching solver), [`stress`] (stresses below the contact), [`fatigue`]
+//! (initiation parameters over the steady cycle), [`closed_form`]
 //! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
@@ -34,6 +36,7 @@ pub mod batch;
 pub mod closed_form;
 pub mod error;
 pub mod evolution;
+pub mod fatigue;
 pub mod history;
 pub mod labels;
 pub mod load;
@@ -48,6 +51,7 @@ mod roots;
 pub mod slip_map;
 mod spline;
 pub mod steady;
+pub mod stress;
 
 pub use error::{Error, Result};
 pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};

@@ -2,10 +2,12 @@
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
 pub mod evolve;
+pub mod fatigue;
 pub mod march;
 pub mod matching;
 pub mod plot;
 pub mod steady;
+pub mod stress;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -17,6 +19,8 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
         Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
+        Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
+        Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
     }
 }

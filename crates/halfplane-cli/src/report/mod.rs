@@ -3,9 +3,11 @@
 //! quantity (for the unit label) and the table format, and reads its cell from the row.
 
 pub mod evolve;
+pub mod fatigue;
 pub mod march;
 pub mod matching;
 pub mod steady;
+pub mod stress;
 
 use crate::units::{Quantity, Units};
 use std::fmt::Write;

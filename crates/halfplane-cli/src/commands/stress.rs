@@ -1,0 +1,177 @@
+//! `halfplane stress`: the stresses below the contact at a marched increment, at the points of a
+//! CSV file or on a grid (`docs/stress.md`).
+
+use crate::args::{Format, StressArgs};
+use crate::output::emit;
+use crate::report::stress::{StressReport, StressRow};
+use crate::units::Units;
+use anyhow::{anyhow, bail, Context, Result};
+use halfplane::history::History;
+use halfplane::march::MarchOptions;
+use halfplane::stress;
+use halfplane::Contact;
+
+/// Most points a run takes (the points and the rows are held in memory: about 100 bytes each).
+pub const MAX_POINTS: usize = 10_000_000;
+
+/// What `stress` runs on.
+#[derive(Debug, Clone)]
+pub struct StressConfig {
+    /// The contact.
+    pub contact: Contact,
+    /// The load history of `[history]`.
+    pub history: History,
+    /// `[solver]` with `--cells` applied.
+    pub options: MarchOptions,
+    /// The increment (1-based).
+    pub step: usize,
+    /// The points' x.
+    pub x: Vec<f64>,
+    /// The points' depth z.
+    pub z: Vec<f64>,
+    /// Unit names.
+    pub units: Units,
+    /// Table, CSV or JSON.
+    pub format: Format,
+}
+
+impl StressConfig {
+    /// Reads the case, the points (`--at`) or the grid (`--grid`) and checks `--step`.
+    pub fn resolve(args: &StressArgs) -> Result<Self> {
+        let case = crate::case::load(&args.case)?;
+        let history = case.history()?;
+        let last = history.loads().len();
+        let step = args.step.unwrap_or(last);
+        if step == 0 || step > last {
+            bail!("invalid --step {step}: the history has increments 1 to {last}");
+        }
+        let (x, z) = match (&args.at, &args.grid) {
+            (Some(path), _) => {
+                let (values, lines) = crate::case::read_csv(path, "--at", &["x", "z"], MAX_POINTS)?;
+                let (x, z): (Vec<f64>, Vec<f64>) = values.chunks(2).map(|c| (c[0], c[1])).unzip();
+                for (i, line) in lines.iter().enumerate() {
+                    stress::check_point(i, x[i], z[i])
+                        .map_err(|e| anyhow!("--at {}, line {line}: {e}", path.display()))?;
+                }
+                (x, z)
+            }
+            (None, Some(g)) => grid(g)?,
+            (None, None) => {
+                bail!("give the points with --at POINTS.csv or --grid X0,X1,NX,Z0,Z1,NZ")
+            }
+        };
+        Ok(Self {
+            options: case.solver_with_cells(args.cells)?,
+            contact: case.contact,
+            history,
+            step,
+            x,
+            z,
+            units: case.units,
+            format: args.format.format(),
+        })
+    }
+}
+
+/// The points of `--grid X0,X1,NX,Z0,Z1,NZ`: along x, one depth after another.
+pub fn grid(text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
+    const NAMES: [&str; 6] = ["X0", "X1", "NX", "Z0", "Z1", "NZ"];
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() != 6 {
+        bail!(
+            "--grid takes six numbers X0,X1,NX,Z0,Z1,NZ, got {} (\"{text}\")",
+            parts.len()
+        );
+    }
+    let mut g = [0.0; 6];
+    for (i, p) in parts.iter().enumerate() {
+        g[i] = p
+            .parse()
+            .map_err(|_| anyhow!("invalid --grid {} = \"{p}\": not a number", NAMES[i]))?;
+    }
+    let [x0, x1, nx, z0, z1, nz] = &g;
+    let count = |name: &str, v: f64| -> Result<usize> {
+        if v.fract() != 0.0 || !(1.0..=MAX_POINTS as f64).contains(&v) {
+            bail!("invalid --grid {name} = {v}: must be a whole number from 1 to {MAX_POINTS}");
+        }
+        Ok(v as usize)
+    };
+    let (nx, nz) = (count("NX", *nx)?, count("NZ", *nz)?);
+    if nx * nz > MAX_POINTS {
+        bail!(
+            "--grid has NX x NZ = {} points, more than the {MAX_POINTS} a run takes",
+            nx * nz
+        );
+    }
+    for (name, v) in [("X0", x0), ("X1", x1), ("Z0", z0), ("Z1", z1)] {
+        if !v.is_finite() || v.abs() > 1e30 {
+            bail!("invalid --grid {name} = {v}: must be a finite number");
+        }
+    }
+    if *z0 < 0.0 || *z1 < 0.0 {
+        bail!("invalid --grid depths Z0 = {z0}, Z1 = {z1}: must be >= 0 (z is the depth into the body)");
+    }
+    let at = |a: f64, b: f64, n: usize, i: usize| {
+        if n == 1 {
+            a
+        } else {
+            a + (b - a) * i as f64 / (n - 1) as f64
+        }
+    };
+    let mut x = Vec::with_capacity(nx * nz);
+    let mut z = Vec::with_capacity(nx * nz);
+    for j in 0..nz {
+        for i in 0..nx {
+            x.push(at(*x0, *x1, nx, i));
+            z.push(at(*z0, *z1, nz, j));
+        }
+    }
+    Ok((x, z))
+}
+
+/// Marches to the increment, evaluates the stresses and prints them.
+pub fn run(config: &StressConfig) -> Result<()> {
+    let kept = stress::marched(
+        &config.contact,
+        &config.history,
+        &config.options,
+        &[config.step],
+    )?;
+    let state = kept
+        .into_iter()
+        .next()
+        .ok_or_else(|| anyhow!("the march did not reach step {}", config.step))?;
+    let bulk = state.load.bulk();
+    let field = stress::field(
+        &state.traction,
+        bulk,
+        &config.contact.material,
+        &config.x,
+        &config.z,
+    )
+    .context("evaluating the stresses")?;
+    let points = (0..config.x.len())
+        .map(|i| StressRow {
+            x: config.x[i],
+            z: config.z[i],
+            sxx: field.sxx[i],
+            szz: field.szz[i],
+            syy: field.syy[i],
+            sxz: field.sxz[i],
+        })
+        .collect();
+    let report = StressReport {
+        step: state.step,
+        normal: state.load.normal(),
+        shear: state.load.shear(),
+        bulk,
+        half_width: state.half_width,
+        points,
+        units: config.units.clone(),
+    };
+    emit(&match config.format {
+        Format::Table => report.table(),
+        Format::Csv => report.csv(),
+        Format::Json => report.json()? + "\n",
+    })
+}

@@ -1,0 +1,70 @@
+//! End-to-end tests of `halfplane fatigue`: the rows and columns on the bundled example, and bad
+//! `[fatigue]` input (exit 2 naming the field).
+
+mod common;
+use common::*;
+
+#[test]
+fn example_reports_every_parameter_with_the_trailing_edge_critical() {
+    let o = run(&["fatigue", &example("fatigue.toml"), "--csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    let mut lines = out.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "parameter,value,x,z,plane,step,point_method,line_method,cycles"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let names: Vec<&str> = rows.iter().map(|r| r[0]).collect();
+    assert_eq!(
+        names,
+        [
+            "swt",
+            "fatemi_socie",
+            "findley",
+            "crossland",
+            "ruiz_f1",
+            "ruiz_f2"
+        ]
+    );
+    // Positive Q and sigma together: the trailing edge x = -a (a = 0.761 mm) is critical.
+    let x: f64 = rows[0][2].parse().unwrap();
+    assert!((x + 0.761).abs() < 0.03, "SWT maximum at x = {x}");
+    let cycles: f64 = rows[0][8].parse().unwrap();
+    assert!(cycles > 1.0, "{cycles}");
+    let o = run(&["fatigue", &example("fatigue.toml"), "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert!(v["critical_distance"].as_f64().unwrap() > 0.0);
+    assert_eq!(v["parameters"].as_array().unwrap().len(), 6);
+}
+
+#[test]
+fn bad_fatigue_input_exits_2_naming_the_field() {
+    let dir = scratch("fatigue-bad");
+    let base = std::fs::read_to_string(examples().join("fatigue.toml")).unwrap();
+    let cases = [
+        ("findley_k = 0.25", "findley_k = -1.0", "fatigue.findley_k"),
+        ("nx = 60", "nx = 1", "fatigue.nx"),
+        (
+            "yield_stress = 900.0",
+            "yield_strength = 900.0",
+            "yield_strength",
+        ),
+        ("kind = \"cycle\"\n", "file = \"h.csv\"\n", "cyclic history"),
+    ];
+    std::fs::write(dir.join("h.csv"), "normal,shear,bulk\n1000,0,0\n").unwrap();
+    for (from, to, message) in cases {
+        let mut text = base.replace(from, to);
+        if from.starts_with("kind") {
+            text = text.replace(
+                "cycles = 2\nsteps_per_half = 30\nramp = \"normal-first\"\nramp_steps = 10\n",
+                "",
+            );
+        }
+        let path = dir.join("case.toml");
+        std::fs::write(&path, text).unwrap();
+        let o = run(&["fatigue", path.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{to}");
+        assert!(stderr(&o).contains(message), "{to}: {}", stderr(&o));
+    }
+}

@@ -1,0 +1,170 @@
+//! Stresses in the body below the contact (`docs/stress.md`).
+//!
+//! The body is the half-plane `z >= 0` (z the depth) that carries the bulk tension `sigma`: the
+//! specimen. Its surface carries the pressure `p` (compressive positive) and the shear traction
+//! `q` that the other body exerts on it, positive in `+x`, the sense of positive Q: exactly the
+//! traction [`crate::march`] reports. The stresses are tension positive, plane strain:
+//!
+//! - `sxx`, `szz`, `sxz` from the tractions by exact integration of the Flamant line-load
+//!   solutions over a piecewise-linear representation ([`Traction`], closed form in `strip.rs`),
+//!   plus `sigma` added to `sxx`;
+//! - `syy = nu (sxx + szz)` (plane strain, with the bulk tension included).
+//!
+//! Piecewise-linear tractions through the march's cell values make the surface stress finite and
+//! accurate; piecewise-constant ones (also available) have logarithmic peaks at every cell edge.
+//! [`closed_form`] holds the independent references (Flamant, McEwen, Nowell-Hills).
+//!
+//! ```
+//! use halfplane::stress::{self, closed_form::mcewen_pressure, Traction};
+//! use halfplane::Material;
+//!
+//! // Hertzian pressure p0 sqrt(1 - x^2) on 2001 nodes, no shear.
+//! let x: Vec<f64> = (0..=2000).map(|i| -1.0 + i as f64 / 1000.0).collect();
+//! let p: Vec<f64> = x.iter().map(|x| (1.0 - x * x).max(0.0).sqrt()).collect();
+//! let traction = Traction::piecewise_linear(&x, &p, &vec![0.0; x.len()])?;
+//! let field = stress::field(&traction, 0.0, &Material::new(200_000.0, 0.3)?, &[0.0], &[0.5])?;
+//! let exact = mcewen_pressure(1.0, 1.0, 0.0, 0.5);
+//! assert!((field.szz[0] - exact[1]).abs() < 1e-5);
+//! # Ok::<(), halfplane::Error>(())
+//! ```
+
+pub mod closed_form;
+mod edge;
+mod marched;
+mod strip;
+mod traction;
+
+pub use marched::{marched, MarchedTraction};
+pub use traction::{Traction, MAX_NODES};
+
+use crate::error::{physical, Error, Result};
+use crate::material::Material;
+
+/// The stress state at one point (tension positive).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Stress {
+    /// `sxx`, along the surface (includes the bulk tension).
+    pub sxx: f64,
+    /// `szz`, normal to the surface.
+    pub szz: f64,
+    /// `syy = nu (sxx + szz)`, out of plane (plane strain).
+    pub syy: f64,
+    /// `sxz`, the in-plane shear.
+    pub sxz: f64,
+}
+
+/// Stresses at a list of points, one value per point in each array, in the order given.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StressField {
+    /// `sxx` (includes the bulk tension).
+    pub sxx: Vec<f64>,
+    /// `szz`.
+    pub szz: Vec<f64>,
+    /// `syy = nu (sxx + szz)`.
+    pub syy: Vec<f64>,
+    /// `sxz`.
+    pub sxz: Vec<f64>,
+}
+
+impl StressField {
+    /// The state at point `i`.
+    pub fn at(&self, i: usize) -> Stress {
+        Stress {
+            sxx: self.sxx[i],
+            szz: self.szz[i],
+            syy: self.syy[i],
+            sxz: self.sxz[i],
+        }
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.sxx.len()
+    }
+
+    /// No points.
+    pub fn is_empty(&self) -> bool {
+        self.sxx.is_empty()
+    }
+}
+
+/// Checks one point: `x` finite, `z` finite and `>= 0` (points inside the other body are not
+/// part of this problem). `index` names the point in errors.
+pub fn check_point(index: usize, x: f64, z: f64) -> Result<()> {
+    physical(&format!("point {index}: x"), x)?;
+    physical(&format!("point {index}: z"), z)?;
+    if z < 0.0 {
+        return Err(Error::InvalidInput {
+            field: format!("point {index}: z"),
+            value: z,
+            valid: "a depth z >= 0 (the body is z >= 0; points in the other body are not computed)",
+        });
+    }
+    Ok(())
+}
+
+/// The stress at `(x, z)` (`z >= 0`) under `traction` and the bulk tension `bulk`, plane strain
+/// with the Poisson's ratio of `material` (closed form of `strip.rs`; conventions of this module).
+/// Errors: a point that is not finite or has `z < 0`, or a surface point on a node where a
+/// traction jumps (its stress is infinite).
+pub fn at(traction: &Traction, bulk: f64, material: &Material, x: f64, z: f64) -> Result<Stress> {
+    check_point(0, x, z)?;
+    physical("bulk tension", bulk)?;
+    point(traction, bulk, material.poisson_ratio(), 0, x, z)
+}
+
+fn point(t: &Traction, bulk: f64, nu: f64, index: usize, x: f64, z: f64) -> Result<Stress> {
+    // -0.0 is the surface: the logarithm's branch needs z = +0.
+    let z = if z == 0.0 { 0.0 } else { z };
+    let [sxx, szz, sxz] = strip::in_plane(t, x, z).ok_or_else(|| Error::InvalidInput {
+        field: format!("point {index}: x"),
+        value: x,
+        valid: "a surface point away from a jump of the traction (the stress is infinite there)",
+    })?;
+    // Adding +0.0 turns a signed zero into +0 (no "-0" in the output).
+    let sxx = sxx + bulk + 0.0;
+    Ok(Stress {
+        sxx,
+        szz: szz + 0.0,
+        syy: nu * (sxx + szz) + 0.0,
+        sxz: sxz + 0.0,
+    })
+}
+
+/// Stresses at the points `(x[i], z[i])` under `traction` and the bulk tension `bulk`, in order
+/// (see [`at`]). `x` and `z` must have the same length. Errors name the point by its 0-based index.
+pub fn field(
+    traction: &Traction,
+    bulk: f64,
+    material: &Material,
+    x: &[f64],
+    z: &[f64],
+) -> Result<StressField> {
+    if x.len() != z.len() {
+        return Err(Error::InvalidCount {
+            field: "z (number of depths, one per x)".into(),
+            value: z.len() as u64,
+            min: x.len() as u64,
+            max: x.len() as u64,
+        });
+    }
+    physical("bulk tension", bulk)?;
+    for (i, (&x, &z)) in x.iter().zip(z).enumerate() {
+        check_point(i, x, z)?;
+    }
+    let nu = material.poisson_ratio();
+    let mut out = StressField {
+        sxx: Vec::with_capacity(x.len()),
+        szz: Vec::with_capacity(x.len()),
+        syy: Vec::with_capacity(x.len()),
+        sxz: Vec::with_capacity(x.len()),
+    };
+    for (i, (&x, &z)) in x.iter().zip(z).enumerate() {
+        let s = point(traction, bulk, nu, i, x, z)?;
+        out.sxx.push(s.sxx);
+        out.szz.push(s.szz);
+        out.syy.push(s.syy);
+        out.sxz.push(s.sxz);
+    }
+    Ok(out)
+}

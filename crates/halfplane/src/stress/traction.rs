@@ -1,0 +1,245 @@
+//! The surface tractions whose stresses [`crate::stress`] evaluates: pressure and shear, each
+//! linear between nodes (continuous or with jumps), zero outside the loaded span.
+//!
+//! Held in node form: a piecewise-linear function that vanishes outside its span is a sum of a
+//! step `J_k H(x - s_k)` and a ramp `S_k (x - s_k) H(x - s_k)` at each node `s_k`, `J_k` the jump
+//! of the value and `S_k` the jump of the slope there. That form is what the closed forms of
+//! `strip.rs` sum; it is built once here from whichever description the caller has.
+
+use super::edge::SqrtEdge;
+use crate::error::{physical, Error, Result};
+use crate::march::Fields;
+
+/// Pressure `p` (compressive positive) and shear traction `q` (positive in `+x`, the traction
+/// the other body exerts: [`crate::march`]'s sign) on the surface, each piecewise linear between
+/// nodes and zero outside the span, valid by construction (finite, nodes strictly increasing).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Traction {
+    pub(super) nodes: Vec<f64>,
+    /// `[J_p, J_q]` per node: jump of the value, right minus left.
+    pub(super) jump: Vec<[f64; 2]>,
+    /// `[S_p, S_q]` per node: jump of the slope, right minus left.
+    pub(super) kink: Vec<[f64; 2]>,
+    /// Square-root corrections of the intervals next to contact edges (`edge.rs`).
+    pub(super) edges: Vec<SqrtEdge>,
+}
+
+/// Most nodes a traction may have (memory of a march with [`crate::march::MarchOptions::MAX_CELLS`]).
+pub const MAX_NODES: usize = 1_000_002;
+
+impl Traction {
+    /// No traction at all: only the bulk tension stresses the body.
+    pub fn unloaded() -> Self {
+        Self {
+            nodes: Vec::new(),
+            jump: Vec::new(),
+            kink: Vec::new(),
+            edges: Vec::new(),
+        }
+    }
+
+    /// Continuous piecewise-linear `p` and `q` through their values at the nodes `x` (strictly
+    /// increasing, at least two), zero outside `[x_0, x_last]`: nonzero end values are jumps
+    /// there. Errors name the array and the index.
+    pub fn piecewise_linear(x: &[f64], pressure: &[f64], shear: &[f64]) -> Result<Self> {
+        check_nodes("traction x", x, 2)?;
+        check_values("traction pressure", pressure, x.len())?;
+        check_values("traction shear", shear, x.len())?;
+        let n = x.len();
+        let slope = |v: &[f64], e: usize| (v[e + 1] - v[e]) / (x[e + 1] - x[e]);
+        let mut jump = vec![[0.0; 2]; n];
+        let mut kink = vec![[0.0; 2]; n];
+        for (c, v) in [pressure, shear].into_iter().enumerate() {
+            jump[0][c] = v[0];
+            jump[n - 1][c] = -v[n - 1];
+            for (k, kink) in kink.iter_mut().enumerate() {
+                let right = if k + 1 < n { slope(v, k) } else { 0.0 };
+                let left = if k > 0 { slope(v, k - 1) } else { 0.0 };
+                kink[c] = right - left;
+            }
+        }
+        if let Some(k) = kink
+            .iter()
+            .position(|s| !(s[0].is_finite() && s[1].is_finite()))
+        {
+            return Err(Error::InvalidInput {
+                field: format!("traction x[{k}]"),
+                value: x[k],
+                valid: "nodes far enough apart that the tractions' slopes are finite",
+            });
+        }
+        Ok(Self {
+            nodes: x.to_vec(),
+            jump,
+            kink,
+            edges: Vec::new(),
+        })
+    }
+
+    /// Piecewise-constant `p` and `q`, one value per cell between consecutive `edges` (strictly
+    /// increasing, at least two): the classical strip elements. Their surface `sxx` is
+    /// logarithmically infinite at every edge where the shear traction jumps.
+    pub fn piecewise_constant(edges: &[f64], pressure: &[f64], shear: &[f64]) -> Result<Self> {
+        check_nodes("traction edges", edges, 2)?;
+        let cells = edges.len() - 1;
+        check_values("traction pressure", pressure, cells)?;
+        check_values("traction shear", shear, cells)?;
+        let value = |v: &[f64], i: usize| if i < cells { v[i] } else { 0.0 };
+        let jump = (0..edges.len())
+            .map(|k| {
+                let left = |v: &[f64]| if k > 0 { value(v, k - 1) } else { 0.0 };
+                [
+                    value(pressure, k) - left(pressure),
+                    value(shear, k) - left(shear),
+                ]
+            })
+            .collect();
+        Ok(Self {
+            nodes: edges.to_vec(),
+            jump,
+            kink: vec![[0.0; 2]; edges.len()],
+            edges: Vec::new(),
+        })
+    }
+
+    /// The tractions of an incomplete contact: `x[0]` and `x[last]` are the contact edges, where
+    /// `p` and `q` must be zero; linear between the inner nodes, and in the first and last
+    /// intervals proportional to the square root of the distance to the edge, as the pressure of
+    /// every smooth contact and the traction `f p` of a slip zone are (`docs/stress.md`, "Edges").
+    /// At least three nodes.
+    pub fn contact(x: &[f64], pressure: &[f64], shear: &[f64]) -> Result<Self> {
+        let mut t = Self::piecewise_linear(x, pressure, shear)?;
+        let n = x.len();
+        if n < 3 {
+            return Err(Error::InvalidCount {
+                field: "traction x (number of nodes, edges included)".into(),
+                value: n as u64,
+                min: 3,
+                max: MAX_NODES as u64,
+            });
+        }
+        for (name, v) in [("traction pressure", pressure), ("traction shear", shear)] {
+            for k in [0, n - 1] {
+                if v[k] != 0.0 {
+                    return Err(Error::InvalidInput {
+                        field: format!("{name}[{k}]"),
+                        value: v[k],
+                        valid: "0 at a contact edge",
+                    });
+                }
+            }
+        }
+        t.edges = vec![
+            SqrtEdge {
+                edge: x[0],
+                length: x[1] - x[0],
+                value: [pressure[1], shear[1]],
+            },
+            SqrtEdge {
+                edge: x[n - 1],
+                length: x[n - 2] - x[n - 1],
+                value: [pressure[n - 2], shear[n - 2]],
+            },
+        ];
+        Ok(t)
+    }
+
+    /// The state of a march increment as a surface-accurate traction: nodes at the contact edges
+    /// `-a` and `a`, where both tractions vanish, and at every cell centre strictly inside, with the
+    /// cell's exact pressure and its shear traction; linear in between and square-root shaped
+    /// next to the edges ([`Traction::contact`]). Piecewise-constant cells would put a logarithmic
+    /// singularity of the surface `sxx` at every cell edge (`docs/stress.md`). `half_width` 0
+    /// (unloaded), or a contact without a cell centre inside, gives no traction.
+    pub fn from_march(half_width: f64, fields: &Fields) -> Result<Self> {
+        let a = half_width;
+        if !(a.is_finite() && a >= 0.0) {
+            return Err(Error::InvalidInput {
+                field: "contact half-width".into(),
+                value: a,
+                valid: "a finite number >= 0",
+            });
+        }
+        if a == 0.0 {
+            return Ok(Self::unloaded());
+        }
+        let mut x = vec![-a];
+        let mut p = vec![0.0];
+        let mut q = vec![0.0];
+        for i in 0..fields.x.len() {
+            if fields.x[i].abs() < a {
+                x.push(fields.x[i]);
+                p.push(fields.pressure[i]);
+                q.push(fields.traction[i]);
+            }
+        }
+        if x.len() == 1 {
+            return Ok(Self::unloaded());
+        }
+        x.push(a);
+        p.push(0.0);
+        q.push(0.0);
+        Self::contact(&x, &p, &q)
+    }
+
+    /// The nodes (sorted).
+    pub fn nodes(&self) -> &[f64] {
+        &self.nodes
+    }
+
+    /// `[p, q]` at `x`, the right-hand limit at a jump (for checks and figures).
+    pub fn at(&self, x: f64) -> [f64; 2] {
+        let mut v = [0.0; 2];
+        for k in 0..self.nodes.len() {
+            let d = x - self.nodes[k];
+            if d < 0.0 {
+                break;
+            }
+            for (c, v) in v.iter_mut().enumerate() {
+                *v += self.jump[k][c] + self.kink[k][c] * d;
+            }
+        }
+        for e in &self.edges {
+            let [p, q] = e.at(x);
+            v[0] += p;
+            v[1] += q;
+        }
+        v
+    }
+}
+
+fn check_nodes(field: &str, x: &[f64], min: usize) -> Result<()> {
+    if x.len() < min || x.len() > MAX_NODES {
+        return Err(Error::InvalidCount {
+            field: format!("{field} (number of nodes)"),
+            value: x.len() as u64,
+            min: min as u64,
+            max: MAX_NODES as u64,
+        });
+    }
+    for (i, v) in x.iter().enumerate() {
+        physical(&format!("{field}[{i}]"), *v)?;
+        if i > 0 && *v <= x[i - 1] {
+            return Err(Error::InvalidInput {
+                field: format!("{field}[{i}]"),
+                value: *v,
+                valid: "a node after the previous one (strictly increasing)",
+            });
+        }
+    }
+    Ok(())
+}
+
+fn check_values(field: &str, v: &[f64], len: usize) -> Result<()> {
+    if v.len() != len {
+        return Err(Error::InvalidCount {
+            field: format!("{field} (number of values)"),
+            value: v.len() as u64,
+            min: len as u64,
+            max: len as u64,
+        });
+    }
+    for (i, v) in v.iter().enumerate() {
+        physical(&format!("{field}[{i}]"), *v)?;
+    }
+    Ok(())
+}
