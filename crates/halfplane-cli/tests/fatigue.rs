@@ -45,6 +45,8 @@ fn bad_fatigue_input_exits_2_naming_the_field() {
     let cases = [
         ("findley_k = 0.25", "findley_k = -1.0", "fatigue.findley_k"),
         ("nx = 60", "nx = 1", "fatigue.nx"),
+        ("nz = 30", "nz = -3", "invalid fatigue.nz = -3"),
+        ("nz = 30", "nz = 2.5", "invalid fatigue.nz = 2.5"),
         (
             "yield_stress = 900.0",
             "yield_strength = 900.0",

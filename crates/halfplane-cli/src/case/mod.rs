@@ -5,84 +5,20 @@ use anyhow::{anyhow, bail, Context, Result};
 use halfplane::history::{Harmonic, History, Ramp};
 use halfplane::march::MarchOptions;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
-use serde::{Deserialize, Deserializer};
-use std::io::BufRead;
+use serde::Deserialize;
 use std::path::Path;
+
+mod count;
+mod csv;
+mod fatigue;
+
+use count::{count_in, RawCount};
+pub(crate) use csv::read_csv;
+pub use fatigue::FatigueSettings;
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
 const MIN_CELLS: usize = MarchOptions::MIN_CELLS;
 const MAX_CELLS: usize = MarchOptions::MAX_CELLS;
-
-/// A count as the case file gives it. Any TOML value is taken here and checked when resolved,
-/// so that the error names the field, the value and the valid range (serde's own message would
-/// say "expected usize", and a negative or huge integer would not name the field).
-#[derive(Debug, Clone, PartialEq)]
-enum RawCount {
-    Integer(i128),
-    Float(f64),
-    /// Anything else, as written.
-    Other(String),
-}
-
-impl<'de> Deserialize<'de> for RawCount {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
-        struct Visitor;
-        impl serde::de::Visitor<'_> for Visitor {
-            type Value = RawCount;
-            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("a whole number")
-            }
-            fn visit_i64<E>(self, v: i64) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Integer(v.into()))
-            }
-            fn visit_u64<E>(self, v: u64) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Integer(v.into()))
-            }
-            fn visit_i128<E>(self, v: i128) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Integer(v))
-            }
-            fn visit_u128<E>(self, v: u128) -> std::result::Result<RawCount, E> {
-                Ok(i128::try_from(v)
-                    .map_or_else(|_| RawCount::Other(v.to_string()), RawCount::Integer))
-            }
-            fn visit_f64<E>(self, v: f64) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Float(v))
-            }
-            fn visit_bool<E>(self, v: bool) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Other(v.to_string()))
-            }
-            fn visit_str<E>(self, v: &str) -> std::result::Result<RawCount, E> {
-                Ok(RawCount::Other(format!("\"{v}\"")))
-            }
-        }
-        d.deserialize_any(Visitor)
-    }
-}
-
-/// Checks a count: a whole number (an integer, or a float with no fraction) from `min` to
-/// `max`. The library checks its own ranges again; this turns values that do not fit a `usize`
-/// (negative, huge, fractional, not a number) into the same kind of message.
-fn count_in(value: &RawCount, field: &str, min: usize, max: usize) -> Result<usize> {
-    let whole = match value {
-        RawCount::Integer(i) => Some(*i),
-        // Every float of magnitude below 2^100 converts exactly when it has no fraction.
-        RawCount::Float(f) if f.is_finite() && f.fract() == 0.0 && f.abs() < 1e30 => {
-            Some(*f as i128)
-        }
-        _ => None,
-    };
-    match whole.and_then(|w| usize::try_from(w).ok()) {
-        Some(n) if (min..=max).contains(&n) => Ok(n),
-        _ => {
-            let shown = match value {
-                RawCount::Integer(i) => i.to_string(),
-                RawCount::Float(f) => f.to_string(),
-                RawCount::Other(s) => s.clone(),
-            };
-            bail!("invalid {field} = {shown}: must be a whole number from {min} to {max}")
-        }
-    }
-}
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -179,8 +115,8 @@ pub struct Case {
     pub solver: MarchOptions,
     /// The unit names of `[units]` (default N, mm, MPa), for labels only.
     pub units: crate::units::Units,
-    /// `[fatigue]` as written, resolved by the `fatigue` command.
-    pub fatigue: Option<toml::Table>,
+    /// `[fatigue]` as written, resolved by [`Case::fatigue`] when a command needs it.
+    fatigue: Option<toml::Table>,
 }
 
 impl Case {
@@ -202,6 +138,11 @@ impl Case {
             options = options.with_cells(n)?;
         }
         Ok(options)
+    }
+
+    /// `[fatigue]`: the material constants (each validated) and the grid (defaults where absent).
+    pub fn fatigue(&self) -> Result<FatigueSettings> {
+        fatigue::resolve(self.fatigue.as_ref())
     }
 
     /// The cycle, or an error saying the `[cycle]` section is needed.
@@ -506,95 +447,4 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
             })?
         }
     })
-}
-
-/// Reads a CSV whose header names `columns`, at most `max_rows` data rows; blank lines and lines
-/// starting with `#` are skipped, a UTF-8 byte-order mark and CRLF line ends (a spreadsheet's
-/// "CSV UTF-8") are accepted. Returns the values row after row (`columns.len()` per row) and
-/// the file line of each row (for errors); `field` names the field that gave the path. Read
-/// a line at a time: a file with too many rows is rejected without holding it.
-pub(crate) fn read_csv(
-    path: &Path,
-    field: &str,
-    columns: &[&str],
-    max_rows: usize,
-) -> Result<(Vec<f64>, Vec<usize>)> {
-    let file = std::fs::File::open(path)
-        .with_context(|| format!("cannot read {field} {}", path.display()))?;
-    let mut reader = std::io::BufReader::new(file);
-    let header_text = columns.join(",");
-    let (mut values, mut numbers) = (Vec::new(), Vec::new());
-    let mut header_seen = false;
-    let mut line = String::new();
-    for number in 1.. {
-        line.clear();
-        let read = reader
-            .read_line(&mut line)
-            .with_context(|| format!("cannot read {field} {}, line {number}", path.display()))?;
-        if read == 0 {
-            break;
-        }
-        let text = if number == 1 {
-            line.strip_prefix('\u{feff}').unwrap_or(&line)
-        } else {
-            &line
-        };
-        // trim() also removes the '\r' of a CRLF line end.
-        let text = text.trim();
-        if text.is_empty() || text.starts_with('#') {
-            continue;
-        }
-        if !header_seen {
-            let names: Vec<String> = text
-                .split(',')
-                .map(|s| s.trim().to_ascii_lowercase())
-                .collect();
-            if names != columns {
-                bail!(
-                    "{field} {}, line {number}: header is \"{text}\", expected \"{header_text}\"",
-                    path.display()
-                );
-            }
-            header_seen = true;
-            continue;
-        }
-        if numbers.len() == max_rows {
-            bail!(
-                "{field} {}, line {number}: the table has more than {max_rows} rows, the most a run takes",
-                path.display()
-            );
-        }
-        let mut found = 0;
-        for cell in text.split(',').map(str::trim) {
-            found += 1;
-            let Some(name) = columns.get(found - 1) else {
-                continue;
-            };
-            let value = cell.parse::<f64>().map_err(|_| {
-                anyhow!(
-                    "{field} {}, line {number}: {name} = \"{cell}\" is not a number",
-                    path.display()
-                )
-            })?;
-            values.push(value);
-        }
-        if found != columns.len() {
-            bail!(
-                "{field} {}, line {number}: expected {} columns ({header_text}), found {found}",
-                path.display(),
-                columns.len()
-            );
-        }
-        numbers.push(number);
-    }
-    if !header_seen {
-        bail!(
-            "{field} {} is empty: it needs a header {header_text} and rows",
-            path.display()
-        );
-    }
-    if numbers.is_empty() {
-        bail!("{field} {} has a header but no rows", path.display());
-    }
-    Ok((values, numbers))
 }

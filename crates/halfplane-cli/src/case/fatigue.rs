@@ -1,0 +1,100 @@
+//! The `[fatigue]` section: the material constants of the initiation parameters and the grid
+//! they are searched on (`docs/fatigue.md`). Each constant is validated by the library's setter,
+//! whose error names the field as the file spells it.
+
+use super::count::{count_in, RawCount};
+use anyhow::{anyhow, Result};
+use halfplane::fatigue::{FatigueConstants, FatigueGrid, MAX_GRID_POINTS};
+use serde::Deserialize;
+
+/// `[fatigue]` as the case file gives it.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFatigue {
+    fatigue_strength: Option<f64>,
+    fatigue_strength_exponent: Option<f64>,
+    fatigue_ductility: Option<f64>,
+    fatigue_ductility_exponent: Option<f64>,
+    shear_fatigue_strength: Option<f64>,
+    shear_fatigue_ductility: Option<f64>,
+    fatemi_socie_k: Option<f64>,
+    findley_k: Option<f64>,
+    crossland_alpha: Option<f64>,
+    yield_stress: Option<f64>,
+    threshold: Option<f64>,
+    endurance_range: Option<f64>,
+    nx: Option<RawCount>,
+    nz: Option<RawCount>,
+    width: Option<f64>,
+    depth: Option<f64>,
+}
+
+/// `[fatigue]` resolved: what `fatigue` and the fatigue figures run with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FatigueSettings {
+    /// The material constants (a parameter whose constants are missing is not reported).
+    pub constants: FatigueConstants,
+    /// The grid below the contact.
+    pub grid: FatigueGrid,
+}
+
+/// Resolves `[fatigue]` (absent: no constants, the default grid).
+pub(super) fn resolve(table: Option<&toml::Table>) -> Result<FatigueSettings> {
+    let raw: RawFatigue = match table {
+        Some(t) => t
+            .clone()
+            .try_into()
+            .map_err(|e| anyhow!("in section [fatigue]: {}", e.to_string().trim_end()))?,
+        None => RawFatigue::default(),
+    };
+    let mut c = FatigueConstants::default();
+    type Setter = fn(FatigueConstants, f64) -> halfplane::Result<FatigueConstants>;
+    let fields: [(Option<f64>, Setter); 12] = [
+        (
+            raw.fatigue_strength,
+            FatigueConstants::with_fatigue_strength,
+        ),
+        (
+            raw.fatigue_strength_exponent,
+            FatigueConstants::with_fatigue_strength_exponent,
+        ),
+        (
+            raw.fatigue_ductility,
+            FatigueConstants::with_fatigue_ductility,
+        ),
+        (
+            raw.fatigue_ductility_exponent,
+            FatigueConstants::with_fatigue_ductility_exponent,
+        ),
+        (
+            raw.shear_fatigue_strength,
+            FatigueConstants::with_shear_fatigue_strength,
+        ),
+        (
+            raw.shear_fatigue_ductility,
+            FatigueConstants::with_shear_fatigue_ductility,
+        ),
+        (raw.fatemi_socie_k, FatigueConstants::with_fatemi_socie_k),
+        (raw.findley_k, FatigueConstants::with_findley_k),
+        (raw.crossland_alpha, FatigueConstants::with_crossland_alpha),
+        (raw.yield_stress, FatigueConstants::with_yield_stress),
+        (raw.threshold, FatigueConstants::with_threshold),
+        (raw.endurance_range, FatigueConstants::with_endurance_range),
+    ];
+    for (value, set) in fields {
+        if let Some(v) = value {
+            c = set(c, v)?;
+        }
+    }
+    let count = |v: &Option<RawCount>, field: &str, default: usize| match v {
+        Some(v) => count_in(v, field, 2, MAX_GRID_POINTS),
+        None => Ok(default),
+    };
+    let grid = FatigueGrid::new(
+        count(&raw.nx, "fatigue.nx", 100)?,
+        count(&raw.nz, "fatigue.nz", 50)?,
+        raw.width.unwrap_or(1.5),
+        raw.depth.unwrap_or(1.0),
+    )?;
+    Ok(FatigueSettings { constants: c, grid })
+}
