@@ -37,7 +37,7 @@ pub enum Command {
     /// tension) at a marched increment: sxx, szz, syy, sxz at the points of --at or on --grid.
     Stress(StressArgs),
     /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
-    /// Crossland, Ruiz F1/F2; critical distances and lives with the constants of [fatigue]).
+    /// Crossland, Ruiz F1/F2, MWCM; critical distances and lives with the constants of [fatigue]).
     Fatigue(FatigueArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]

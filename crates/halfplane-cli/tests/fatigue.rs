@@ -24,7 +24,8 @@ fn example_reports_every_parameter_with_the_trailing_edge_critical() {
             "findley",
             "crossland",
             "ruiz_f1",
-            "ruiz_f2"
+            "ruiz_f2",
+            "mwcm"
         ]
     );
     // Positive Q and sigma together: the trailing edge x = -a (a = 0.761 mm) is critical.
@@ -35,7 +36,13 @@ fn example_reports_every_parameter_with_the_trailing_edge_critical() {
     let o = run(&["fatigue", &example("fatigue.toml"), "--json"]);
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert!(v["critical_distance"].as_f64().unwrap() > 0.0);
-    assert_eq!(v["parameters"].as_array().unwrap().len(), 6);
+    let parameters = v["parameters"].as_array().unwrap();
+    assert_eq!(parameters.len(), 7);
+    // The MWCM row: its plane and its value, an effective shear stress in MPa.
+    let mwcm = &parameters[6];
+    assert_eq!(mwcm["parameter"], "mwcm");
+    assert!(mwcm["plane"].as_f64().is_some() && mwcm["value"].as_f64().unwrap() > 0.0);
+    assert!((mwcm["x"].as_f64().unwrap() + 0.761).abs() < 0.03, "{mwcm}");
 }
 
 #[test]
@@ -46,6 +53,16 @@ fn bad_fatigue_input_exits_2_naming_the_field() {
         ("findley_k = 0.25", "findley_k = -1.0", "fatigue.findley_k"),
         ("nx = 60", "nx = 1", "fatigue.nx"),
         ("nz = 30", "nz = -3", "invalid fatigue.nz = -3"),
+        (
+            "torsional_fatigue_limit = 220.0",
+            "torsional_fatigue_limit = 100.0",
+            "fatigue.torsional_fatigue_limit = 100",
+        ),
+        (
+            "axial_fatigue_limit = 350.0",
+            "",
+            "missing field fatigue.axial_fatigue_limit",
+        ),
         ("nz = 30", "nz = 2.5", "invalid fatigue.nz = 2.5"),
         (
             "yield_stress = 900.0",

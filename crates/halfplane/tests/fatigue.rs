@@ -1,5 +1,6 @@
 //! Fatigue parameters (`halfplane::fatigue`): the critical-plane search against a hand-worked
-//! uniaxial case, the life curves against themselves, mirror symmetry of every parameter, and the
+//! uniaxial case, the Modified Wohler Curve Method against hand-worked uniaxial, torsional and
+//! combined cases, the life curves against themselves, mirror symmetry of every parameter, and the
 //! marched steady cycle against the Nowell-Hills closed form at the cycle's extremes.
 
 use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, Parameter};
@@ -21,7 +22,104 @@ fn constants() -> FatigueConstants {
         .and_then(|c| c.with_findley_k(0.25))
         .and_then(|c| c.with_crossland_alpha(0.4))
         .and_then(|c| c.with_yield_stress(900.0))
+        .and_then(|c| c.with_fatigue_limits(400.0, 250.0))
         .unwrap()
+}
+
+/// A history of `n` states over one period, `state(phase)` with the phase in radians.
+fn over_a_period(n: usize, state: impl Fn(f64) -> Stress) -> Vec<Stress> {
+    (0..n)
+        .map(|k| state(2.0 * std::f64::consts::PI * k as f64 / n as f64))
+        .collect()
+}
+
+#[test]
+fn mwcm_matches_the_hand_worked_uniaxial_torsional_and_combined_cases() {
+    // sigma_-1 = 400, tau_-1 = 250: kappa = tau_-1 - sigma_-1/2 = 50, cap kappa rho_lim = 125.
+    let (axial, torsional) = (400.0, 250.0);
+    let m = Material::new(200_000.0, 0.3).unwrap();
+    let c = constants();
+    let mwcm = |h: &[Stress]| fatigue::critical_planes(h, &m, &c).mwcm.unwrap();
+    let close = |got: f64, want: f64, what: &str| {
+        assert!(
+            (got - want).abs() < 1e-9 * want.abs(),
+            "{what}: MWCM {got} vs hand-worked {want}"
+        );
+    };
+    // Fully reversed uniaxial stress at the axial limit: planes at 45 and 135 degrees with
+    // tau_a = sigma_n,max = S/2, rho = 1, so tau_a + kappa = S/2 + tau_-1 - S/2 = tau_-1: the
+    // method is calibrated to give its limit here.
+    let uniaxial = |mean: f64, amplitude: f64| {
+        over_a_period(72, |t| Stress {
+            sxx: mean + amplitude * t.sin(),
+            ..Stress::default()
+        })
+    };
+    let p = mwcm(&uniaxial(0.0, axial));
+    close(p.value, torsional, "uniaxial at sigma_-1");
+    let plane = (p.angle - 45.0).abs().min((p.angle - 135.0).abs());
+    assert!(plane < 1e-6, "uniaxial MWCM plane {}", p.angle);
+    assert_eq!(p.index, 18, "the normal stress peaks at a quarter period");
+    // Fully reversed shear at the torsional limit: planes at 0 and 90 degrees, tau_a = T, no
+    // normal stress on them (rho = 0): tau_-1.
+    let p = mwcm(&over_a_period(72, |t| Stress {
+        sxz: torsional * t.sin(),
+        ..Stress::default()
+    }));
+    close(p.value, torsional, "torsion at tau_-1");
+    assert!(p.angle.min(180.0 - p.angle).min((p.angle - 90.0).abs()) < 1e-6);
+    // A tensile mean: tau_a = Sa/2, sigma_n,max = (Sm + Sa)/2, rho = (Sm + Sa)/Sa.
+    close(
+        mwcm(&uniaxial(100.0, 300.0)).value,
+        150.0 + 50.0 * 400.0 / 300.0,
+        "uniaxial with mean 100",
+    );
+    // A large mean: rho = 3 > rho_lim = 250/100 = 2.5, so kappa rho is capped at tau_-1/2.
+    close(
+        mwcm(&uniaxial(600.0, 300.0)).value,
+        150.0 + 125.0,
+        "uniaxial with mean 600 (rho capped)",
+    );
+    // In-phase sxx = S sin, sxz = T sin: the largest shear amplitude is Mohr's radius
+    // R = sqrt(S^2/4 + T^2), on a plane whose normal stress is the circle's centre S/2 sin, so
+    // tau_a + kappa rho = R + kappa (S/2)/R. The plane is off the one-degree samples.
+    let (s, t): (f64, f64) = (300.0, 120.0);
+    let r: f64 = (0.25 * s * s + t * t).sqrt();
+    let p = mwcm(&over_a_period(72, |w| Stress {
+        sxx: s * w.sin(),
+        sxz: t * w.sin(),
+        ..Stress::default()
+    }));
+    close(
+        p.value,
+        r + 50.0 * 0.5 * s / r,
+        "in-phase tension and shear",
+    );
+    // That plane is 45 degrees from the principal planes, tan(2 t_p) = 2T/S.
+    let principal = 0.5 * (2.0 * t).atan2(s).to_degrees();
+    let d = (p.angle - principal - 45.0).rem_euclid(90.0);
+    assert!(
+        d.min(90.0 - d) < 1e-6,
+        "plane {} vs principal {principal} + 45",
+        p.angle
+    );
+    // No constants, no MWCM; and the pair is validated together.
+    let without = FatigueConstants::default();
+    assert!(fatigue::critical_planes(&uniaxial(0.0, 1.0), &m, &without)
+        .mwcm
+        .is_none());
+    for (a, t, field) in [
+        (400.0, 190.0, "fatigue.torsional_fatigue_limit"),
+        (400.0, 410.0, "fatigue.torsional_fatigue_limit"),
+        (-400.0, 250.0, "fatigue.axial_fatigue_limit"),
+        (400.0, f64::NAN, "fatigue.torsional_fatigue_limit"),
+    ] {
+        let e = FatigueConstants::default().with_fatigue_limits(a, t);
+        assert!(
+            matches!(&e, Err(halfplane::Error::InvalidInput { field: f, .. }) if f == field),
+            "({a}, {t}): {e:?}"
+        );
+    }
 }
 
 #[test]
@@ -164,7 +262,7 @@ fn every_parameter_is_mirror_symmetric_under_x_to_minus_x_with_q_reversed() {
         &grid,
     )
     .unwrap();
-    assert_eq!(a.parameters.len(), 6);
+    assert_eq!(a.parameters.len(), 7);
     for (p, m) in a.parameters.iter().zip(&b.parameters) {
         assert_eq!(p.parameter, m.parameter);
         let scale = p.value.abs().max(1e-300);

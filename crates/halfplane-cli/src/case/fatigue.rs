@@ -3,7 +3,7 @@
 //! whose error names the field as the file spells it.
 
 use super::count::{count_in, RawCount};
-use anyhow::{anyhow, Result};
+use anyhow::{anyhow, bail, Result};
 use halfplane::fatigue::{FatigueConstants, FatigueGrid, MAX_GRID_POINTS};
 use serde::Deserialize;
 
@@ -23,6 +23,8 @@ struct RawFatigue {
     yield_stress: Option<f64>,
     threshold: Option<f64>,
     endurance_range: Option<f64>,
+    axial_fatigue_limit: Option<f64>,
+    torsional_fatigue_limit: Option<f64>,
     nx: Option<RawCount>,
     nz: Option<RawCount>,
     width: Option<f64>,
@@ -86,6 +88,12 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<FatigueSettings> {
             c = set(c, v)?;
         }
     }
+    c = match (raw.axial_fatigue_limit, raw.torsional_fatigue_limit) {
+        (Some(axial), Some(torsional)) => c.with_fatigue_limits(axial, torsional)?,
+        (None, None) => c,
+        (Some(_), None) => bail!("missing field fatigue.torsional_fatigue_limit: the Modified Wohler Curve Method needs it with axial_fatigue_limit (give tau_-1, the fully reversed torsional fatigue limit as an amplitude)"),
+        (None, Some(_)) => bail!("missing field fatigue.axial_fatigue_limit: the Modified Wohler Curve Method needs it with torsional_fatigue_limit (give sigma_-1, the fully reversed axial fatigue limit as an amplitude)"),
+    };
     let count = |v: &Option<RawCount>, field: &str, default: usize| match v {
         Some(v) => count_in(v, field, 2, MAX_GRID_POINTS),
         None => Ok(default),

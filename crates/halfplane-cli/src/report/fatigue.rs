@@ -46,7 +46,8 @@ impl FatigueRow {
         use Quantity::{Length, None};
         use Style::Sci;
         [
-            Column::<Self>::new("parameter", None, |r| Cell::Text(r.parameter.into())),
+            Column::<Self>::new("parameter", None, |r| Cell::Text(r.parameter.into()))
+                .table(12, Style::Fixed(0)),
             Column::<Self>::new("value", None, |r| Cell::Num(r.value)).table(13, Sci(4)),
             Column::<Self>::new("x", Length, |r| Cell::Num(r.x)).table(11, Style::Fixed(5)),
             Column::<Self>::new("z", Length, |r| Cell::Num(r.z)).table(11, Style::Fixed(5)),

@@ -20,6 +20,8 @@ pub struct FatigueConstants {
     pub(crate) yield_stress: Option<f64>,
     pub(crate) threshold: Option<f64>,
     pub(crate) endurance_range: Option<f64>,
+    /// `(axial_fatigue_limit, torsional_fatigue_limit)`: sigma_-1 and tau_-1, set together.
+    pub(crate) fatigue_limits: Option<(f64, f64)>,
 }
 
 fn check(field: &str, value: f64, ok: bool, valid: &'static str) -> Result<f64> {
@@ -123,6 +125,27 @@ impl FatigueConstants {
     /// `endurance_range` Delta sigma_0 > 0 (plain fatigue limit as a range).
     pub fn with_endurance_range(mut self, v: f64) -> Result<Self> {
         self.endurance_range = Some(positive("endurance_range", v)?);
+        Ok(self)
+    }
+
+    /// `axial_fatigue_limit` sigma_-1 and `torsional_fatigue_limit` tau_-1: the fully reversed
+    /// (R = -1) uniaxial and torsional fatigue limits as amplitudes, both > 0 with
+    /// `0.5 <= tau_-1/sigma_-1 <= 1`, for the Modified Wohler Curve Method. The lower bound is
+    /// Tresca's ratio, where the method's mean-stress slope `kappa = tau_-1 - sigma_-1/2` vanishes
+    /// (below it the slope would reward tension); the upper bound, a torsional limit above the
+    /// axial one, is not seen in metals.
+    pub fn with_fatigue_limits(mut self, axial: f64, torsional: f64) -> Result<Self> {
+        let axial = positive("axial_fatigue_limit", axial)?;
+        let torsional = positive("torsional_fatigue_limit", torsional)?;
+        let ratio = torsional / axial;
+        check(
+            "torsional_fatigue_limit",
+            torsional,
+            (0.5..=1.0).contains(&ratio),
+            "from 0.5 to 1 times fatigue.axial_fatigue_limit (the torsional fatigue limit tau_-1 of \
+             a metal lies between Tresca's sigma_-1/2 and sigma_-1)",
+        )?;
+        self.fatigue_limits = Some((axial, torsional));
         Ok(self)
     }
 

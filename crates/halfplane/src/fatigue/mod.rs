@@ -4,8 +4,9 @@
 //! cycle (the steady cycle), evaluates the stress history on a grid below the contact with
 //! [`crate::stress`], and reports for each parameter its maximum, where `(x, z)`, on which plane
 //! and at which increment: Smith-Watson-Topper, Fatemi-Socie and Findley on critical planes
-//! (sampled every degree, refined to 0.05 degree), Crossland (invariant), and Ruiz's F1 and F2 on
-//! the surface. With `threshold` and `endurance_range` it adds the critical-distance values (point
+//! (sampled every degree, refined to 0.05 degree), the Modified Wohler Curve Method on the plane of
+//! the largest shear stress amplitude (found exactly), Crossland (invariant), and Ruiz's F1 and F2
+//! on the surface. With `threshold` and `endurance_range` it adds the critical-distance values (point
 //! method at `L/2`, line method over `2L`, both straight into the depth below the maximum), and
 //! with the strain-life constants the cycles to initiation. Conventions are those of
 //! [`crate::stress`]: `z >= 0` is the depth in the body carrying the bulk tension.
@@ -16,7 +17,7 @@ mod plane;
 
 pub use constants::FatigueConstants;
 pub use life::{fatemi_socie_life, swt_life};
-pub use plane::Critical;
+pub use plane::{mwcm_effective_shear, Critical};
 
 use crate::error::{Error, Result};
 use crate::history::History;
@@ -37,6 +38,9 @@ pub struct CriticalPlanes {
     pub findley: Option<Critical>,
     /// Crossland's value and the index of the peak hydrostatic stress (needs `crossland_alpha`).
     pub crossland: Option<(f64, usize)>,
+    /// The Modified Wohler Curve Method's effective shear stress on the plane of the largest
+    /// shear stress amplitude (needs `axial_fatigue_limit` and `torsional_fatigue_limit`).
+    pub mwcm: Option<Critical>,
 }
 
 /// The parameters at one point over `history` (the stress states of a cycle, at least one):
@@ -62,6 +66,7 @@ pub fn critical_planes(
             fatemi_socie: None,
             findley: None,
             crossland: None,
+            mwcm: None,
         };
     }
     let p = plane::search(history, e, constants);
@@ -70,6 +75,7 @@ pub fn critical_planes(
         fatemi_socie: p.fatemi_socie,
         findley: p.findley,
         crossland: plane::crossland(history, constants),
+        mwcm: p.mwcm,
     }
 }
 
@@ -155,6 +161,8 @@ pub enum Parameter {
     RuizF1,
     /// Ruiz F2 = max(sigma_xx tau delta) on the surface.
     RuizF2,
+    /// Modified Wohler Curve Method, `tau_a + kappa rho` on the plane of the largest `tau_a`.
+    Mwcm,
 }
 
 impl Parameter {
@@ -167,6 +175,7 @@ impl Parameter {
             Parameter::Crossland => "crossland",
             Parameter::RuizF1 => "ruiz_f1",
             Parameter::RuizF2 => "ruiz_f2",
+            Parameter::Mwcm => "mwcm",
         }
     }
 }
@@ -294,7 +303,7 @@ pub fn analyse(
     let critical_distance = constants.critical_distance();
     let shear_modulus = material.youngs_modulus() / (2.0 * (1.0 + material.poisson_ratio()));
     type Pick = fn(&CriticalPlanes) -> Option<(f64, Option<f64>, usize)>;
-    let picks: [(Parameter, Pick); 4] = [
+    let picks: [(Parameter, Pick); 5] = [
         (Parameter::Swt, |p| {
             Some((p.swt.value, Some(p.swt.angle), p.swt.index))
         }),
@@ -306,6 +315,9 @@ pub fn analyse(
         }),
         (Parameter::Crossland, |p| {
             p.crossland.map(|(v, i)| (v, None, i))
+        }),
+        (Parameter::Mwcm, |p| {
+            p.mwcm.map(|c| (c.value, Some(c.angle), c.index))
         }),
     ];
     let mut parameters = Vec::new();
@@ -409,6 +421,8 @@ pub fn analyse(
             });
         }
     }
+    // The order of `Parameter` (the MWCM, added later, after Ruiz).
+    parameters.sort_by_key(|p| p.parameter as u8);
     Ok(FatigueResult {
         critical_distance,
         steps,
