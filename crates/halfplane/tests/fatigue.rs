@@ -362,7 +362,25 @@ fn marched_steady_cycle_matches_the_closed_form_at_the_cycle_extremes() {
         }
     };
     let k = constants();
-    let mut worst: f64 = 0.0;
+    // The marched extremes: the increments at Q = +/- q0 of the last cycle.
+    let ends: Vec<usize> = (0..kept.len())
+        .filter(|&i| (kept[i].load.shear().abs() - q0).abs() < 1e-9)
+        .collect();
+    assert_eq!(ends.len(), 2, "one increment at each extreme");
+    let values = |p: &fatigue::CriticalPlanes| {
+        [
+            p.swt.value,
+            p.fatemi_socie.unwrap().value,
+            p.findley.unwrap().value,
+            p.crossland.unwrap().0,
+            p.mwcm.unwrap().value,
+        ]
+    };
+    const NAMES: [&str; 5] = ["swt", "fatemi_socie", "findley", "crossland", "mwcm"];
+    // Per parameter and point: the whole marched cycle, the marched extremes alone, the closed form.
+    let mut cycle = Vec::new();
+    let mut marched_ends = Vec::new();
+    let mut closed = Vec::new();
     for (x, z) in [
         (-1.0, 0.05),
         (-0.9, 0.1),
@@ -377,20 +395,59 @@ fn marched_steady_cycle_matches_the_closed_form_at_the_cycle_extremes() {
             .map(|t| stress::at(&t.traction, t.load.bulk(), &m, x, z).unwrap())
             .collect();
         let extremes = [state(-1.0, x, z), state(1.0, x, z)];
-        let got = fatigue::critical_planes(&marched, &m, &k);
-        let want = fatigue::critical_planes(&extremes, &m, &k);
-        for (g, w) in [
-            (got.swt.value, want.swt.value),
-            (got.findley.unwrap().value, want.findley.unwrap().value),
-            (got.crossland.unwrap().0, want.crossland.unwrap().0),
-        ] {
-            worst = worst.max((g - w).abs() / w.abs());
+        let two = [marched[ends[0]], marched[ends[1]]];
+        cycle.push(values(&fatigue::critical_planes(&marched, &m, &k)));
+        marched_ends.push(values(&fatigue::critical_planes(&two, &m, &k)));
+        closed.push(values(&fatigue::critical_planes(&extremes, &m, &k)));
+    }
+    // Each parameter's error relative to its largest closed-form value over the points (SWT is
+    // zero where the normal stress stays compressive, so a pointwise ratio would be 0/0).
+    let error = |got: &[[f64; 5]], j: usize| {
+        let scale = closed.iter().map(|w| w[j].abs()).fold(0.0, f64::max);
+        got.iter()
+            .zip(&closed)
+            .map(|(g, w)| (g[j] - w[j]).abs() / scale)
+            .fold(0.0, f64::max)
+    };
+    // Measured at 1600 cells and 20 increments per half-cycle:
+    //                      swt      fatemi_socie  findley  crossland  mwcm
+    //   marched extremes   1.7e-5   1.3e-5        1.2e-5   1.1e-5     1.4e-5
+    //   whole cycle        1.7e-5   2.0e-4        1.2e-5   1.1e-5     2.4e-3
+    // The marched extremes differ from the closed form by the march's traction error alone
+    // (3.6e-5 p0 below the surface, docs/stress.md): 5e-5 leaves a third for the refinement of
+    // the planes and the rounding of the points' stresses.
+    const EXTREMES: f64 = 5e-5;
+    for (j, name) in NAMES.iter().enumerate() {
+        let e = error(&marched_ends, j);
+        assert!(
+            e < EXTREMES,
+            "{name} of the marched extremes off the Nowell-Hills extremes by {e:.2e} of its scale"
+        );
+    }
+    // Over the whole cycle SWT, Findley and Crossland are set by the extremes (the same error).
+    // Fatemi-Socie and the MWCM take the peak normal stress on a plane chosen by its shear
+    // amplitude, and that peak can come between the extremes: partial slip makes the stress path
+    // between them curved (the largest difference is at x = 0.8a, near the leading edge). There
+    // the cycle can only add to the extremes, and is bounded by what was measured with a margin
+    // of a quarter.
+    for (j, name) in NAMES.iter().enumerate() {
+        let e = error(&cycle, j);
+        let bound = match *name {
+            "fatemi_socie" => 2.5e-4,
+            "mwcm" => 3e-3,
+            _ => EXTREMES,
+        };
+        assert!(
+            e < bound,
+            "{name} over the marched cycle off the Nowell-Hills extremes by {e:.2e} of its scale"
+        );
+        for (c, two) in cycle.iter().zip(&marched_ends) {
+            assert!(
+                c[j] >= two[j] - 1e-12 * two[j].abs(),
+                "{name}: the whole cycle {} below its own extremes {}",
+                c[j],
+                two[j]
+            );
         }
     }
-    // The extremes bound an in-phase cycle; the march's states between them and its traction
-    // error (3.6e-5 p0 below the surface) stay within 1%.
-    assert!(
-        worst < 1e-2,
-        "cyclic parameters off the closed-form extremes by {worst}"
-    );
 }
