@@ -149,6 +149,30 @@ impl FatigueConstants {
         Ok(self)
     }
 
+    /// The `[fatigue]` fields `parameter` needs that are not given (empty: it is evaluated).
+    pub fn missing_for(&self, parameter: super::Parameter) -> Vec<&'static str> {
+        use super::Parameter as P;
+        let limits = self.fatigue_limits.is_some();
+        let needs: &[(&'static str, bool)] = match parameter {
+            P::FatemiSocie => &[
+                ("fatemi_socie_k", self.fatemi_socie_k.is_some()),
+                ("yield_stress", self.yield_stress.is_some()),
+            ],
+            P::Findley => &[("findley_k", self.findley_k.is_some())],
+            P::Crossland => &[("crossland_alpha", self.crossland_alpha.is_some())],
+            P::Mwcm => &[
+                ("axial_fatigue_limit", limits),
+                ("torsional_fatigue_limit", limits),
+            ],
+            _ => &[],
+        };
+        needs
+            .iter()
+            .filter(|(_, given)| !given)
+            .map(|(name, _)| *name)
+            .collect()
+    }
+
     /// The critical distance `L = (1/pi)(Delta K_th/Delta sigma_0)^2` (El Haddad, Topper and
     /// Smith 1979; Taylor, *The Theory of Critical Distances*, 2007), when both are given.
     pub fn critical_distance(&self) -> Option<f64> {

@@ -222,12 +222,33 @@ pub struct FatigueResult {
     pub grid_z: Vec<f64>,
     /// SWT at every grid point, row after row (z outer, x inner).
     pub swt_map: Vec<f64>,
+    /// Every grid parameter whose constants are given (SWT, Fatemi-Socie, Findley, Crossland,
+    /// MWCM, in the order of [`Parameter`]) at every grid point, laid out as `swt_map`.
+    pub maps: Vec<(Parameter, Vec<f64>)>,
     /// Cell centres in contact at some increment of the cycle (the surface profiles' x).
     pub surface_x: Vec<f64>,
     /// Largest surface `sxx` over the cycle at each of them.
     pub surface_sxx_max: Vec<f64>,
     /// `sxx_max |q|_max delta` at each of them (Ruiz F2's profile; delta the slip amplitude).
     pub ruiz_f2_profile: Vec<f64>,
+    /// The surface `sxx` at each of them at every increment of the cycle: one row per entry of
+    /// `steps`, one value per entry of `surface_x`.
+    pub surface_sxx: Vec<Vec<f64>>,
+}
+
+impl FatigueResult {
+    /// The map of `parameter` over the grid (row after row, z outer), when it was evaluated.
+    pub fn map(&self, parameter: Parameter) -> Option<&[f64]> {
+        self.maps
+            .iter()
+            .find(|(p, _)| *p == parameter)
+            .map(|(_, m)| m.as_slice())
+    }
+
+    /// The result of `parameter`, when it was evaluated.
+    pub fn parameter(&self, parameter: Parameter) -> Option<&ParameterResult> {
+        self.parameters.iter().find(|p| p.parameter == parameter)
+    }
 }
 
 /// Marches `history` (which must have cycles) and evaluates the parameters over its last cycle.
@@ -320,6 +341,13 @@ pub fn analyse(
             p.mwcm.map(|c| (c.value, Some(c.angle), c.index))
         }),
     ];
+    let mut maps = Vec::new();
+    for (parameter, pick) in picks {
+        let map: Option<Vec<f64>> = planes.iter().map(|p| pick(p).map(|v| v.0)).collect();
+        if let Some(map) = map {
+            maps.push((parameter, map));
+        }
+    }
     let mut parameters = Vec::new();
     for (parameter, pick) in picks {
         let Some((k, (value, angle, index))) = planes
@@ -382,6 +410,14 @@ pub fn analyse(
         .collect();
     let surface_x: Vec<f64> = inside.iter().map(|&i| result.x[i]).collect();
     let surface = histories(&surface_x, &vec![0.0; surface_x.len()])?;
+    let surface_sxx = (0..spc)
+        .map(|k| {
+            surface
+                .iter()
+                .map(|h| h.get(k).map_or(0.0, |s| s.sxx))
+                .collect()
+        })
+        .collect();
     let mut surface_sxx_max = Vec::with_capacity(inside.len());
     let mut ruiz_f2_profile = Vec::with_capacity(inside.len());
     let mut f1 = (f64::NEG_INFINITY, 0usize);
@@ -430,8 +466,10 @@ pub fn analyse(
         grid_x,
         grid_z,
         swt_map,
+        maps,
         surface_x,
         surface_sxx_max,
         ruiz_f2_profile,
+        surface_sxx,
     })
 }
