@@ -180,6 +180,84 @@ pub enum PlotCommand {
     /// Load spaces of a prototype and its matched test side by side, with the P-S paths of both
     /// edges (needs [cycle]; test geometry options as `halfplane match`).
     Match(MatchFigureArgs),
+    /// Contours of a stress component below the contact at a marched increment (needs
+    /// [history]).
+    StressMap(StressMapArgs),
+    /// Contours of a fatigue parameter over the steady cycle with its maximum marked (needs a
+    /// cyclic [history] and the parameter's constants in [fatigue], whose grid it uses).
+    FatigueMap(FatigueMapArgs),
+    /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
+    /// [history]).
+    SurfaceProfiles(SurfaceProfilesArgs),
+}
+
+/// The stress components a map can show.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Component {
+    /// sxx, along the surface (with the bulk tension).
+    Sxx,
+    /// szz, normal to the surface.
+    Szz,
+    /// syy = nu (sxx + szz), out of plane.
+    Syy,
+    /// sxz, the in-plane shear.
+    Sxz,
+}
+
+#[derive(Args, Debug)]
+pub struct StressMapArgs {
+    #[command(flatten)]
+    pub figure: FigureArgs,
+    /// The component to draw.
+    #[arg(long, value_enum, default_value_t = Component::Sxx)]
+    pub component: Component,
+    /// March increment (1-based; default: the last).
+    #[arg(long)]
+    pub step: Option<usize>,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+}
+
+/// The parameters a fatigue map can show (the names of the `fatigue` report).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MapParameter {
+    /// Smith-Watson-Topper.
+    #[value(name = "swt")]
+    Swt,
+    /// Fatemi-Socie (needs fatemi_socie_k and yield_stress).
+    #[value(name = "fatemi_socie")]
+    FatemiSocie,
+    /// Findley (needs findley_k).
+    #[value(name = "findley")]
+    Findley,
+    /// Crossland (needs crossland_alpha).
+    #[value(name = "crossland")]
+    Crossland,
+    /// Modified Wohler Curve Method (needs axial_fatigue_limit and torsional_fatigue_limit).
+    #[value(name = "mwcm")]
+    Mwcm,
+}
+
+#[derive(Args, Debug)]
+pub struct FatigueMapArgs {
+    #[command(flatten)]
+    pub figure: FigureArgs,
+    /// The parameter to draw.
+    #[arg(long, value_enum, default_value_t = MapParameter::Swt)]
+    pub parameter: MapParameter,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct SurfaceProfilesArgs {
+    #[command(flatten)]
+    pub figure: FigureArgs,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
 }
 
 /// What every figure takes: the case and the output file.

@@ -1,6 +1,7 @@
 //! Figures for halfplane, drawn from the same numbers the library computes: the paper's load-space,
-//! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, and the marching solver's
-//! fields and zones. SVG or PNG by file name, rendered in pure Rust with a bundled font.
+//! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
+//! fields and zones, and contour maps of the stresses and fatigue parameters below the contact
+//! with the surface profiles of the cycle. SVG or PNG by file name, rendered in pure Rust with a bundled font.
 //!
 //! Each `*_figure` function returns a [`Figure`] (plain data: panels of named series) that
 //! [`write()`] renders, so callers and tests can inspect exactly what is drawn. The science behind
@@ -8,9 +9,13 @@
 //! march recorders ([`MarchedCycle`], [`FieldRecorder`], [`StepFields`]) live in
 //! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
+mod contour;
+mod fields;
 mod matching;
 mod render;
 
+pub use contour::GridMap;
+pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
 pub use matching::match_figure;
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 

@@ -1,14 +1,15 @@
 //! `halfplane plot FIGURE`: one figure, each with its own options, as SVG or PNG.
 
-use crate::args::{FigureArgs, PlotCommand};
-use crate::case::Case;
+use crate::args::{Component, FigureArgs, MapParameter, PlotCommand};
+use crate::case::{Case, FatigueSettings};
 use crate::output::note;
 use anyhow::{anyhow, bail, Result};
+use halfplane::fatigue::{self, Parameter};
 use halfplane::history::History;
 use halfplane::march::{self, MarchOptions};
 use halfplane::matching::Mode;
-use halfplane::{Contact, Cycle};
-use halfplane_plot::{FieldRecorder, MarchedCycle, SlipMap, Units};
+use halfplane::{stress, Contact, Cycle};
+use halfplane_plot::{FieldRecorder, GridMap, MarchedCycle, SlipMap, Units};
 use std::path::PathBuf;
 
 /// The most increments `march-fields` draws: each keeps four fields of every cell, and a figure
@@ -72,7 +73,32 @@ pub enum FigureConfig {
         /// Asymptotic or exact.
         mode: Mode,
     },
+    /// A stress component below the contact at an increment.
+    StressMap {
+        /// The load history of `[history]`.
+        history: History,
+        /// `[solver]` with `--cells` applied.
+        options: MarchOptions,
+        /// The increment, 1 to the history's length.
+        step: usize,
+        /// The component.
+        component: Component,
+    },
+    /// A fatigue parameter over the grid of `[fatigue]`, or the surface profiles.
+    Fatigue {
+        /// The cyclic history of `[history]`.
+        history: History,
+        /// `[solver]` with `--cells` applied.
+        options: MarchOptions,
+        /// `[fatigue]`.
+        settings: FatigueSettings,
+        /// The parameter to map; `None`: the surface profiles.
+        parameter: Option<Parameter>,
+    },
 }
+
+/// Points of the stress map along x and into the depth.
+const MAP_POINTS: (usize, usize) = (121, 61);
 
 impl PlotConfig {
     /// Reads the case and checks the figure's options against it.
@@ -145,6 +171,63 @@ impl PlotConfig {
                 let mode = super::matching::mode(&a.test);
                 (&a.figure, case, FigureConfig::Match { cycle, test, mode })
             }
+            PlotCommand::StressMap(a) => {
+                let case = load(&a.figure)?;
+                let history = case.history()?;
+                let options = case.solver_with_cells(a.cells)?;
+                let last = history.loads().len();
+                let step = a.step.unwrap_or(last);
+                if step == 0 || step > last {
+                    bail!("invalid --step {step}: the history has increments 1 to {last}");
+                }
+                let figure = FigureConfig::StressMap {
+                    history,
+                    options,
+                    step,
+                    component: a.component,
+                };
+                (&a.figure, case, figure)
+            }
+            PlotCommand::FatigueMap(a) => {
+                let case = load(&a.figure)?;
+                let settings = case.fatigue()?;
+                let parameter = match a.parameter {
+                    MapParameter::Swt => Parameter::Swt,
+                    MapParameter::FatemiSocie => Parameter::FatemiSocie,
+                    MapParameter::Findley => Parameter::Findley,
+                    MapParameter::Crossland => Parameter::Crossland,
+                    MapParameter::Mwcm => Parameter::Mwcm,
+                };
+                let missing = settings.constants.missing_for(parameter);
+                if !missing.is_empty() {
+                    bail!(
+                        "--parameter {} needs {} in [fatigue]",
+                        parameter.name(),
+                        missing
+                            .iter()
+                            .map(|m| format!("fatigue.{m}"))
+                            .collect::<Vec<_>>()
+                            .join(" and ")
+                    );
+                }
+                let figure = FigureConfig::Fatigue {
+                    history: cyclic(&case)?,
+                    options: case.solver_with_cells(a.cells)?,
+                    settings,
+                    parameter: Some(parameter),
+                };
+                (&a.figure, case, figure)
+            }
+            PlotCommand::SurfaceProfiles(a) => {
+                let case = load(&a.figure)?;
+                let figure = FigureConfig::Fatigue {
+                    history: cyclic(&case)?,
+                    options: case.solver_with_cells(a.cells)?,
+                    settings: case.fatigue()?,
+                    parameter: None,
+                };
+                (&a.figure, case, figure)
+            }
         };
         Ok(Self {
             contact: case.contact,
@@ -157,6 +240,62 @@ impl PlotConfig {
 
 fn load(args: &FigureArgs) -> Result<Case> {
     crate::case::load(&args.case)
+}
+
+/// The history of `[history]`, which the fatigue figures need to have cycles.
+fn cyclic(case: &Case) -> Result<History> {
+    let history = case.history()?;
+    if history.cycles().is_none() {
+        bail!("the fatigue figures need a cyclic history: [history] kind = \"cycle\" or \"harmonic\" (a history from a file has no cycles)");
+    }
+    Ok(history)
+}
+
+/// The stress map: march to the increment, evaluate the component on a grid over
+/// `+/-1.5 a` and down to `a` (`a` the half-width there) and draw its contours.
+fn stress_map(
+    contact: &Contact,
+    history: &History,
+    options: &MarchOptions,
+    step: usize,
+    component: Component,
+    units: &Units,
+) -> Result<halfplane_plot::Figure> {
+    let state = stress::marched(contact, history, options, &[step])?
+        .into_iter()
+        .next()
+        .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
+    let a = state.half_width;
+    let (nx, nz) = MAP_POINTS;
+    let x: Vec<f64> = (0..nx)
+        .map(|i| 1.5 * a * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
+        .collect();
+    let z: Vec<f64> = (0..nz).map(|j| a * j as f64 / (nz - 1) as f64).collect();
+    let (px, pz): (Vec<f64>, Vec<f64>) = z
+        .iter()
+        .flat_map(|&z| x.iter().map(move |&x| (x, z)))
+        .unzip();
+    let field = stress::field(
+        &state.traction,
+        state.load.bulk(),
+        &contact.material,
+        &px,
+        &pz,
+    )?;
+    let (values, name) = match component {
+        Component::Sxx => (field.sxx, "σxx"),
+        Component::Szz => (field.szz, "σzz"),
+        Component::Syy => (field.syy, "σyy"),
+        Component::Sxz => (field.sxz, "σxz"),
+    };
+    let map = GridMap {
+        x: &x,
+        z: &z,
+        values: &values,
+    };
+    Ok(halfplane_plot::stress_map_figure(
+        &map, name, step, a, units,
+    )?)
 }
 
 /// The increments `march-fields` draws: as given, or 1/4, 1/2, 3/4 and the end of the last cycle
@@ -238,6 +377,30 @@ pub fn run(config: &PlotConfig) -> Result<()> {
         FigureConfig::Match { cycle, test, mode } => {
             let report = halfplane::matching::match_cycle(contact, cycle, test, *mode)?;
             halfplane_plot::match_figure(&report, units)?
+        }
+        FigureConfig::StressMap {
+            history,
+            options,
+            step,
+            component,
+        } => stress_map(contact, history, options, *step, *component, units)?,
+        FigureConfig::Fatigue {
+            history,
+            options,
+            settings,
+            parameter,
+        } => {
+            let result = fatigue::analyse(
+                contact,
+                history,
+                options,
+                &settings.constants,
+                &settings.grid,
+            )?;
+            match parameter {
+                Some(p) => halfplane_plot::fatigue_map_figure(&result, *p, units)?,
+                None => halfplane_plot::surface_profiles_figure(&result, units),
+            }
         }
     };
     halfplane_plot::write(&fig, &config.output)?;
