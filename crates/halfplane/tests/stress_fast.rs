@@ -158,3 +158,40 @@ fn fast_field_matches_the_direct_sum_with_jumps_and_refuses_the_same_surface_poi
     pz[1234] = 1e-12;
     assert!(stress::field(&constant, 0.0, &m, &px, &pz).is_ok());
 }
+
+#[test]
+fn fast_field_matches_the_direct_sum_on_a_dense_grid_at_the_surface() {
+    // 30,000 points within 2% of the half-width of the surface: boxes deep in the tree hold many
+    // points, so every route of the fast method (translated expansions down to the finest boxes,
+    // and the point-by-point route of sparsely filled boxes) is taken.
+    let t = partial_slip(1000);
+    let m = material();
+    let (mut x, mut z) = (Vec::new(), Vec::new());
+    for j in 0..30 {
+        for i in 0..1000 {
+            x.push(-1.2 + 2.4 * i as f64 / 999.0);
+            z.push(0.02 * j as f64 / 29.0);
+        }
+    }
+    let fast = stress::field(&t, 0.0, &m, &x, &z).unwrap();
+    let direct = stress::field_direct(&t, 0.0, &m, &x, &z).unwrap();
+    let peak = direct
+        .sxx
+        .iter()
+        .chain(&direct.szz)
+        .fold(0.0f64, |a, b| a.max(b.abs()));
+    for i in 0..x.len() {
+        for (a, b) in [
+            (fast.sxx[i], direct.sxx[i]),
+            (fast.szz[i], direct.szz[i]),
+            (fast.sxz[i], direct.sxz[i]),
+        ] {
+            assert!(
+                (a - b).abs() < 1e-11 * peak,
+                "fast multipole stress {a} vs direct {b} at ({}, {}) near the surface",
+                x[i],
+                z[i]
+            );
+        }
+    }
+}

@@ -33,6 +33,10 @@ use expansion::{Expansions, MAX_ORDER};
 const NEAR: i64 = 2;
 /// Elements per finest source box, on average.
 const LEAF: usize = 4;
+/// Boxes with at most this many points (above the finest level) stop the descent: their points
+/// take the box's local expansion and then the near boxes' multipoles point by point, which is
+/// cheaper than translating expansions for a handful of points.
+const FEW: usize = 64;
 /// The truncation error of one expansion, relative to the field of the source box it represents.
 const TOLERANCE: f64 = 1e-13;
 
@@ -89,6 +93,8 @@ struct Level {
     hi: i64,
     multipoles: Vec<f64>,
     occupied: Vec<bool>,
+    /// Distance from each box centre to its farthest element end.
+    radius: Vec<f64>,
 }
 
 /// A point to evaluate: its column and row at the finest level, and its index.
@@ -109,16 +115,20 @@ pub(super) struct Tree<'a> {
     width: f64,
     /// Finest level.
     finest: usize,
+    /// The convergence ratio the order was chosen for: a multipole is used directly at a point
+    /// at least `radius/ratio` from its centre.
+    ratio: f64,
     levels: Vec<Level>,
     /// First element of each finest source column (`lo..=hi`).
     first: Vec<usize>,
 }
 
-/// The order of the expansions for source boxes whose radius is at most `radius` box widths.
-fn order_for(radius: f64) -> usize {
+/// The order of the expansions for source boxes whose radius is at most `radius` box widths,
+/// and the convergence ratio `c` it was chosen for.
+fn order_for(radius: f64) -> (usize, f64) {
     let d = (((NEAR + 1) * (NEAR + 1)) as f64 + 0.25).sqrt();
     let c = (radius + std::f64::consts::FRAC_1_SQRT_2) / d;
-    ((TOLERANCE * (1.0 - c)).ln() / c.ln()).ceil() as usize
+    (((TOLERANCE * (1.0 - c)).ln() / c.ln()).ceil() as usize, c)
 }
 
 impl<'a> Tree<'a> {
@@ -189,18 +199,30 @@ impl<'a> Tree<'a> {
                 }
             }
         }
-        let ex = Expansions::new(order_for(radius).clamp(4, MAX_ORDER)).ok()?;
+        let (order, ratio) = order_for(radius);
+        let ex = Expansions::new(order.clamp(4, MAX_ORDER)).ok()?;
         let elements = Elements::new(t);
         let p = ex.order;
         // Multipoles: the finest level from the elements, then upwards.
         let mut levels: Vec<Level> = bounds
             .iter()
             .zip(&extents)
-            .map(|(&(lo, hi), ext)| Level {
-                lo,
-                hi,
-                multipoles: vec![0.0; (hi - lo) as usize * 2 * p],
-                occupied: ext.iter().map(Option::is_some).collect(),
+            .enumerate()
+            .map(|(l, (&(lo, hi), ext))| {
+                let w = width / (1u64 << l) as f64;
+                Level {
+                    lo,
+                    hi,
+                    multipoles: vec![0.0; (hi - lo) as usize * 2 * p],
+                    occupied: ext.iter().map(Option::is_some).collect(),
+                    radius: (lo..)
+                        .zip(ext)
+                        .map(|(j, e)| {
+                            let c = origin + (j as f64 + 0.5) * w;
+                            e.map_or(0.0, |(a, b)| (c - a).max(b - c))
+                        })
+                        .collect(),
+                }
             })
             .collect();
         {
@@ -245,6 +267,7 @@ impl<'a> Tree<'a> {
             origin,
             width,
             finest,
+            ratio,
             levels,
             first,
         })
@@ -361,6 +384,31 @@ impl<'a> Tree<'a> {
                         }
                         out[t.index] = stresses(&s, pz);
                     }
+                } else if group.len() <= FEW {
+                    for t in group.iter() {
+                        let (px, pz) =
+                            (x[t.index], if z[t.index] == 0.0 { 0.0 } else { z[t.index] });
+                        let f = self
+                            .ex
+                            .l2p(&child_local, C((px - tx) / w, (pz - tz) / w), w);
+                        let mut s = sums_of(f);
+                        let mut direct = (i64::MAX, i64::MIN);
+                        for j in ci - NEAR..=ci + NEAR {
+                            self.add_box(l + 1, j, px, pz, &mut s, &mut direct);
+                        }
+                        if direct.0 <= direct.1 {
+                            let lo = self.levels[self.finest].lo;
+                            let (e0, e1) = (
+                                self.first[(direct.0 - lo) as usize],
+                                self.first[(direct.1 + 1 - lo) as usize],
+                            );
+                            if e1 > e0 && !self.near(&mut s, e0, e1, px, pz) {
+                                *bad = (*bad).min(t.index);
+                                continue;
+                            }
+                        }
+                        out[t.index] = stresses(&s, pz);
+                    }
                 } else {
                     self.descend(
                         l + 1,
@@ -375,6 +423,36 @@ impl<'a> Tree<'a> {
                     );
                 }
             }
+        }
+    }
+
+    /// Adds the field of source box `(l, j)` at the point `(x, z)`: its multipole when the point
+    /// is far enough for the expansion's accuracy, else its children's; finest boxes that are too
+    /// close widen `direct`, the columns to sum exactly (they are contiguous: the boxes too close
+    /// to a point surround it).
+    fn add_box(&self, l: usize, j: i64, x: f64, z: f64, s: &mut Sums, direct: &mut (i64, i64)) {
+        let level = &self.levels[l];
+        if j < level.lo || j >= level.hi || !level.occupied[(j - level.lo) as usize] {
+            return;
+        }
+        let slot = (j - level.lo) as usize;
+        let w = self.width / (1u64 << l) as f64;
+        let c = self.origin + (j as f64 + 0.5) * w;
+        if level.radius[slot] <= self.ratio * (x - c).hypot(z) {
+            let p = self.ex.order;
+            let m = &level.multipoles[slot * 2 * p..(slot + 1) * 2 * p];
+            let add = sums_of(self.ex.m2p(m, C(w, 0.0) / C(x - c, z), w));
+            for k in 0..2 {
+                s.fp[k] += add.fp[k];
+                s.dp[k] += add.dp[k];
+                s.fq[k] += add.fq[k];
+                s.dq[k] += add.dq[k];
+            }
+        } else if l == self.finest {
+            *direct = (direct.0.min(j), direct.1.max(j));
+        } else {
+            self.add_box(l + 1, 2 * j, x, z, s, direct);
+            self.add_box(l + 1, 2 * j + 1, x, z, s, direct);
         }
     }
 
