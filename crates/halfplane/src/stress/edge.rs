@@ -13,57 +13,7 @@
 //! of arguments with a non-negative imaginary part give the limit from the body on the surface. A
 //! right edge is the mirror image: `F(zeta) = -conj(F~(-conj(zeta)))` with `F~` the left-edge form.
 
-use std::ops::{Add, Div, Mul, Sub};
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct C(f64, f64);
-
-impl Add for C {
-    type Output = C;
-    fn add(self, o: C) -> C {
-        C(self.0 + o.0, self.1 + o.1)
-    }
-}
-impl Sub for C {
-    type Output = C;
-    fn sub(self, o: C) -> C {
-        C(self.0 - o.0, self.1 - o.1)
-    }
-}
-impl Mul for C {
-    type Output = C;
-    fn mul(self, o: C) -> C {
-        C(self.0 * o.0 - self.1 * o.1, self.0 * o.1 + self.1 * o.0)
-    }
-}
-impl Div for C {
-    type Output = C;
-    fn div(self, o: C) -> C {
-        let d = o.0 * o.0 + o.1 * o.1;
-        C(
-            (self.0 * o.0 + self.1 * o.1) / d,
-            (self.1 * o.0 - self.0 * o.1) / d,
-        )
-    }
-}
-impl C {
-    fn ln(self) -> C {
-        C(
-            0.5 * (self.0 * self.0 + self.1 * self.1).ln(),
-            self.1.atan2(self.0),
-        )
-    }
-    /// Principal square root; the imaginary part keeps the sign of the argument's (so +0 stays +0).
-    fn sqrt(self) -> C {
-        let r = self.0.hypot(self.1);
-        let re = (0.5 * (r + self.0)).max(0.0).sqrt();
-        let im = (0.5 * (r - self.0)).max(0.0).sqrt();
-        C(re, if self.1 < 0.0 { -im } else { im })
-    }
-    fn scale(self, k: f64) -> C {
-        C(self.0 * k, self.1 * k)
-    }
-}
+use super::complex::C;
 
 /// One interval next to a contact edge.
 #[derive(Debug, Clone, Copy, PartialEq)]

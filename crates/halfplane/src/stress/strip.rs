@@ -14,70 +14,87 @@
 //! closed upper half-plane, which is the body `z >= 0`, so the sum is exact on the surface too,
 //! where a continuous traction leaves only the finite `(x - s_k) ln|x - s_k|` at each node.
 
+use super::edge::SqrtEdge;
 use super::traction::Traction;
 use std::f64::consts::FRAC_2_PI;
 
 /// The four Cauchy sums at one point: `F_p`, `F_q` (real and imaginary parts) and their
 /// derivatives (zero on the surface, where only `z F'` enters and vanishes).
-struct Sums {
-    fp: [f64; 2],
-    fq: [f64; 2],
-    dp: [f64; 2],
-    dq: [f64; 2],
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Sums {
+    pub fp: [f64; 2],
+    pub fq: [f64; 2],
+    pub dp: [f64; 2],
+    pub dq: [f64; 2],
+}
+
+/// Adds the terms of one node `s_k` with jumps `[J_p, J_q]` and ramps `[S_p, S_q]` at `(x, z)`:
+/// `(J + S w) log w + J` to `F` and `S log w + J/w` to `F'` (off the surface), `w = zeta - s_k`.
+/// `false` at a surface point on a node where a traction jumps (the stress is infinite there).
+#[inline(always)]
+pub(super) fn add_node(
+    s: &mut Sums,
+    node: f64,
+    jump: [f64; 2],
+    kink: [f64; 2],
+    x: f64,
+    z: f64,
+) -> bool {
+    let [jp, jq] = jump;
+    let [sp, sq] = kink;
+    let u = x - node;
+    s.fp[0] += jp;
+    s.fq[0] += jq;
+    let surface = z == 0.0;
+    if surface && u == 0.0 {
+        // (J + S w) log w -> 0 as w -> 0 when J = 0.
+        return jp == 0.0 && jq == 0.0;
+    }
+    let r2 = u * u + z * z;
+    let (lr, li) = (0.5 * r2.ln(), z.atan2(u));
+    // (J + S w) log w, w = u + i z.
+    let (cr, ci) = (jp + sp * u, sp * z);
+    s.fp[0] += cr * lr - ci * li;
+    s.fp[1] += cr * li + ci * lr;
+    let (cr, ci) = (jq + sq * u, sq * z);
+    s.fq[0] += cr * lr - ci * li;
+    s.fq[1] += cr * li + ci * lr;
+    if !surface {
+        // S log w + J / w, 1/w = (u - i z)/r2.
+        let (ir, ii) = (u / r2, -z / r2);
+        s.dp[0] += sp * lr + jp * ir;
+        s.dp[1] += sp * li + jp * ii;
+        s.dq[0] += sq * lr + jq * ir;
+        s.dq[1] += sq * li + jq * ii;
+    }
+    true
+}
+
+/// Adds the square-root edge correction `e` at `(x, z)`.
+pub(super) fn add_edge(s: &mut Sums, e: &SqrtEdge, x: f64, z: f64) {
+    let (f, d) = e.cauchy(x, z);
+    let [vp, vq] = e.value;
+    for c in 0..2 {
+        s.fp[c] += vp * f[c];
+        s.fq[c] += vq * f[c];
+        if z != 0.0 {
+            s.dp[c] += vp * d[c];
+            s.dq[c] += vq * d[c];
+        }
+    }
 }
 
 /// `Some(sums)` at `(x, z)`, `z >= 0`; `None` at a surface point on a node where a traction
 /// jumps (the surface stress is infinite there).
 fn sums(t: &Traction, x: f64, z: f64) -> Option<Sums> {
-    let mut s = Sums {
-        fp: [0.0; 2],
-        fq: [0.0; 2],
-        dp: [0.0; 2],
-        dq: [0.0; 2],
-    };
-    let surface = z == 0.0;
+    let mut s = Sums::default();
     for k in 0..t.nodes.len() {
-        let [jp, jq] = t.jump[k];
-        let [sp, sq] = t.kink[k];
-        let u = x - t.nodes[k];
-        s.fp[0] += jp;
-        s.fq[0] += jq;
-        if surface && u == 0.0 {
-            if jp != 0.0 || jq != 0.0 {
-                return None;
-            }
-            // (J + S w) log w -> 0 as w -> 0 when J = 0.
-            continue;
-        }
-        let r2 = u * u + z * z;
-        let (lr, li) = (0.5 * r2.ln(), z.atan2(u));
-        // (J + S w) log w, w = u + i z.
-        let (cr, ci) = (jp + sp * u, sp * z);
-        s.fp[0] += cr * lr - ci * li;
-        s.fp[1] += cr * li + ci * lr;
-        let (cr, ci) = (jq + sq * u, sq * z);
-        s.fq[0] += cr * lr - ci * li;
-        s.fq[1] += cr * li + ci * lr;
-        if !surface {
-            // S log w + J / w, 1/w = (u - i z)/r2.
-            let (ir, ii) = (u / r2, -z / r2);
-            s.dp[0] += sp * lr + jp * ir;
-            s.dp[1] += sp * li + jp * ii;
-            s.dq[0] += sq * lr + jq * ir;
-            s.dq[1] += sq * li + jq * ii;
+        if !add_node(&mut s, t.nodes[k], t.jump[k], t.kink[k], x, z) {
+            return None;
         }
     }
     for e in &t.edges {
-        let (f, d) = e.cauchy(x, z);
-        let [vp, vq] = e.value;
-        for c in 0..2 {
-            s.fp[c] += vp * f[c];
-            s.fq[c] += vq * f[c];
-            if !surface {
-                s.dp[c] += vp * d[c];
-                s.dq[c] += vq * d[c];
-            }
-        }
+        add_edge(&mut s, e, x, z);
     }
     Some(s)
 }
@@ -85,15 +102,20 @@ fn sums(t: &Traction, x: f64, z: f64) -> Option<Sums> {
 /// `[sxx, szz, sxz]` from the traction alone at `(x, z)`, `z >= 0`; `None` on the surface at a
 /// node where a traction jumps. Sign convention of [`crate::stress`].
 pub(super) fn in_plane(t: &Traction, x: f64, z: f64) -> Option<[f64; 3]> {
-    let s = sums(t, x, z)?;
+    Some(stresses(&sums(t, x, z)?, z))
+}
+
+/// `[sxx, szz, sxz]` at depth `z` from the Cauchy sums there (Johnson eqs. 2.15 and 2.19 in
+/// complex form, module documentation). Sign convention of [`crate::stress`].
+pub(super) fn stresses(s: &Sums, z: f64) -> [f64; 3] {
     // sxx + szz = (2/pi)(Im F_p - Re F_q);
     // szz - sxx + 2i sxz = (2/pi)(F_q - z F_p' + i z F_q').
     let first = FRAC_2_PI * (s.fp[1] - s.fq[0]);
     let second_re = FRAC_2_PI * (s.fq[0] - z * s.dp[0] - z * s.dq[1]);
     let second_im = FRAC_2_PI * (s.fq[1] - z * s.dp[1] + z * s.dq[0]);
-    Some([
+    [
         0.5 * (first - second_re),
         0.5 * (first + second_re),
         0.5 * second_im,
-    ])
+    ]
 }
