@@ -149,7 +149,7 @@ fn profiles() -> [(&'static str, Profile); 2] {
 fn energy_per_cycle_converges_at_second_order_in_the_time_step() {
     // Three step counts in the asymptotic range of `docs/convergence.md` at 200 cells (15 edge
     // crossings per half-cycle; 320 steps per half and more). The observed order from the
-    // differences E(h) - E(h/2) and E(h/2) - E(h/4) was 1.96 (Hertz) and 2.01 (flat-rounded);
+    // differences E(h) - E(h/2) and E(h/2) - E(h/4) was 1.93 (Hertz) and 2.04 (flat-rounded);
     // the study shows single refinements between 1.9 and 2.2 in this range, so 1.8 allows that
     // scatter and still fails any first-order scheme (the previous energy rule gave 0.82 here).
     for (name, profile) in profiles() {

@@ -25,8 +25,14 @@
 //!   slip in time everywhere. With `r_j(t)` the departure of cell j's traction from the straight
 //!   line over its slipping interval and `Gamma` the (symmetric) response of slips to tractions
 //!   at fixed stick set, the energy changes by `-sum_i c_i (Gamma R)_i`, `R_j = integral r_j dt`,
-//!   `c_i` the traction rate of cell i. `Gamma R` costs one more stick solve per sub-step in
-//!   which cells slip.
+//!   `c_i` the rate of cell i's traction while it slips: its change divided by the length of its
+//!   slipping interval `1 - tau_i`, which weights an onset cell's own curvature (concentrated
+//!   after its onset) exactly. Other cells' curvature is spread over the whole sub-step, for which
+//!   the change alone would be the right weight, and a cell leaving contact nearly unloaded has
+//!   its onset just before the end, so the divisor is kept at least 1/16: the weight stays
+//!   bounded, and the studies' errors moved by at most 3% against an unbounded divisor (1/2 cost
+//!   up to 25% at 5 steps per half; no divisor left an error floor of 5e-8 at 800 cells).
+//!   `Gamma R` costs one more stick solve per sub-step in which cells slip.
 //!
 //! The curvature term is the energy `integral q ds` with `s = s_lin + Gamma r` integrated by
 //! parts (`r` vanishes at the ends of the slipping interval); the term quadratic in `r` drops
@@ -76,7 +82,7 @@ impl Marcher {
         let mut differ: Vec<(usize, f64)> = Vec::new();
         for i in 0..n {
             let known = std::mem::take(&mut self.known[i]);
-            self.rate[i] = 0.0;
+            self.change[i] = 0.0;
             let s = self.sub_slip[i];
             if s == 0.0 {
                 if known != 0.0 {
@@ -108,9 +114,9 @@ impl Marcher {
             } else {
                 self.traction[i]
             };
-            self.rate[i] = (self.traction[i] + self.dq[i] - q_tau) / (1.0 - tau);
-            if self.rate[i] != known {
-                differ.push((i, self.rate[i] - known));
+            self.change[i] = (self.traction[i] + self.dq[i] - q_tau) / (1.0 - tau).max(1.0 / 16.0);
+            if self.change[i] != known {
+                differ.push((i, self.change[i] - known));
             }
         }
         if slipping {
@@ -121,7 +127,7 @@ impl Marcher {
 
     /// `-sum_i c_i (Gamma R)_i` (the curvature term, per unit cell width): the slip response to
     /// traction increments R on the slipping cells, with the stick cells held (zero slip) and
-    /// the resultant unchanged, contracted with the rates c. Solved exactly like an
+    /// the resultant unchanged, contracted with the traction rates c. Solved exactly like an
     /// active-set pass (same stick set, so the all-ones solve is reused).
     ///
     /// The contraction `c . G dq'` is taken as `(G c) . dq'` (G is symmetric), with `G c` the
@@ -137,7 +143,12 @@ impl Marcher {
                 }
             }
         } else {
-            apply(&mut self.kernel, &self.dense, &self.rate, &mut self.g_known);
+            apply(
+                &mut self.kernel,
+                &self.dense,
+                &self.change,
+                &mut self.g_known,
+            );
         }
         let n = self.x.len();
         apply(&mut self.kernel, &self.dense, &self.known, &mut self.work);
@@ -167,7 +178,7 @@ impl Marcher {
         }
         let c_disp = self.compliance / PI;
         Ok((0..n)
-            .map(|i| c_disp * (self.g_known[i] * self.rhs[i] + c * self.rate[i]))
+            .map(|i| c_disp * (self.g_known[i] * self.rhs[i] + c * self.change[i]))
             .sum())
     }
 

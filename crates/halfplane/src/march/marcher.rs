@@ -73,8 +73,8 @@ pub struct Marcher {
     pub(super) work: Vec<f64>,
     /// Onset time of each cell in the current sub-step (`dissipation.rs`).
     pub(super) onset: Vec<f64>,
-    /// Traction rate of each slipping cell over its slipping interval (`dissipation.rs`).
-    pub(super) rate: Vec<f64>,
+    /// Traction rate of each slipping cell while it slips (`dissipation.rs`).
+    pub(super) change: Vec<f64>,
     pub(super) rhs: Vec<f64>,
     pub(super) u: Vec<f64>,
     pub(super) v: Vec<f64>,
@@ -136,7 +136,7 @@ impl Marcher {
             dq: zeros.clone(),
             work: zeros.clone(),
             onset: zeros.clone(),
-            rate: zeros.clone(),
+            change: zeros.clone(),
             rhs: zeros.clone(),
             u: zeros.clone(),
             v: zeros.clone(),
