@@ -1,5 +1,6 @@
 //! Runs the benchmark history once, for profiling:
-//! `valgrind --tool=callgrind target/release/examples/profile_march CELLS`.
+//! `valgrind --tool=callgrind target/release/examples/profile_march CELLS [flat-rounded]`
+//! (Hertz unless the second argument is `flat-rounded`: b = 0.3, R = 50).
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions};
 use halfplane::reference;
@@ -9,7 +10,10 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(1000);
-    let contact = reference::hertz();
+    let contact = match std::env::args().nth(2).as_deref() {
+        Some("flat-rounded") => reference::flat_rounded(),
+        _ => reference::hertz(),
+    };
     let (p1, p2) = (reference::point1(), reference::point2());
     let history = History::in_phase(p1, p2, 3, 45, Ramp::NormalFirst, 15).unwrap();
     let (mut passes, mut runs) = (0, 0);

@@ -1,12 +1,12 @@
 //! The marcher: the state of one march ([`Marcher`]) and its increments. `Marcher::new` sets
 //! up the grid and the kernel; `step` splits an increment where the contact edge crosses a cell
 //! centre (docs/theory.md, "Time marching": moving edges, exactly); `advance` solves one sub-step's
-//! Coulomb complementarity problem by the active set and accounts its dissipation.
+//! Coulomb complementarity problem by the active set and adds up its dissipation.
 //!
 //! Owns the active set (which cells are out, stuck or slipping) and the state fields (pressure,
 //! traction, slip, energy). Never solves a linear system itself (the stick cells' systems are
-//! `solve.rs`'s), never builds the kernel (`kernel.rs`) and never does cycle accounting
-//! (`cycles.rs`).
+//! `solve.rs`'s), never builds the kernel (`kernel.rs`), never integrates the energy of a
+//! sub-step (`dissipation.rs`) and never does cycle accounting (`cycles.rs`).
 
 use super::kernel;
 use super::solve::{apply, Rhs, SchurCache};
@@ -29,14 +29,15 @@ pub(super) enum Cell {
 /// The marching state: `new` sets up the grid (the init stage), `step` advances one increment.
 ///
 /// The fields `solve.rs` needs (the stick set, the kernel, the right-hand side, the solutions and
-/// the solver caches) and those `cycles.rs` reads (grid, slip, energy) are visible to the
+/// the solver caches), those `dissipation.rs` reads (the sub-step's start and end, its trial
+/// pass, and work buffers) and those `cycles.rs` reads (grid, slip, energy) are visible to the
 /// `march` module; the rest of the state is this file's alone.
 pub struct Marcher {
     contact: Contact,
     options: MarchOptions,
-    compliance: f64,
-    friction: f64,
-    width: f64,
+    pub(super) compliance: f64,
+    pub(super) friction: f64,
+    pub(super) width: f64,
     pub(super) x: Vec<f64>,
     pub(super) kernel: Toeplitz,
     /// Row-major N x N kernel for [`LinearSolver::Dense`].
@@ -45,23 +46,35 @@ pub struct Marcher {
     /// The load reached by the last increment; `None` before the first (unloaded).
     load: Option<LoadPoint>,
     pub(super) energy: f64,
-    pressure: Vec<f64>,
-    traction: Vec<f64>,
+    pub(super) pressure: Vec<f64>,
+    pub(super) traction: Vec<f64>,
     pub(super) slip: Vec<f64>,
     slip_increment: Vec<f64>,
     /// Sum of |slip| over the sub-steps of the current increment (for the stick/slip labels).
     slip_travel: Vec<f64>,
     /// Slip of the current sub-step.
-    sub_slip: Vec<f64>,
+    pub(super) sub_slip: Vec<f64>,
+    /// Slip of the current sub-step's first active-set pass (the stick set of its start).
+    pub(super) trial_slip: Vec<f64>,
+    /// The trial traction with which a stick cell was last flagged to slip.
+    pub(super) flag_traction: Vec<f64>,
+    /// The cells at the start of the current sub-step (entering cells stuck).
+    pub(super) start_cells: Vec<Cell>,
     /// Pressure at the start of the current sub-step.
-    pressure_start: Vec<f64>,
+    pub(super) pressure_start: Vec<f64>,
     /// Contact half-width reached (0 unloaded).
     half_width: f64,
     pub(super) cells: Vec<Cell>,
     // Work buffers, reused by every increment.
-    known: Vec<f64>,
-    dq: Vec<f64>,
-    work: Vec<f64>,
+    pub(super) known: Vec<f64>,
+    /// `G known` of the last pass (`dissipation.rs` reuses it).
+    pub(super) g_known: Vec<f64>,
+    pub(super) dq: Vec<f64>,
+    pub(super) work: Vec<f64>,
+    /// Onset time of each cell in the current sub-step (`dissipation.rs`).
+    pub(super) onset: Vec<f64>,
+    /// Traction rate of each slipping cell while it slips (`dissipation.rs`).
+    pub(super) change: Vec<f64>,
     pub(super) rhs: Vec<f64>,
     pub(super) u: Vec<f64>,
     pub(super) v: Vec<f64>,
@@ -112,12 +125,18 @@ impl Marcher {
             slip_increment: zeros.clone(),
             slip_travel: zeros.clone(),
             sub_slip: zeros.clone(),
+            trial_slip: zeros.clone(),
+            flag_traction: zeros.clone(),
+            start_cells: vec![Cell::Out; n],
             pressure_start: zeros.clone(),
             half_width: 0.0,
             cells: vec![Cell::Out; n],
             known: zeros.clone(),
+            g_known: zeros.clone(),
             dq: zeros.clone(),
             work: zeros.clone(),
+            onset: zeros.clone(),
+            change: zeros.clone(),
             rhs: zeros.clone(),
             u: zeros.clone(),
             v: zeros.clone(),
@@ -246,11 +265,12 @@ impl Marcher {
     /// with `|x| < a` are in contact during the whole sub-step). Returns the energy dissipated
     /// and the active-set passes used.
     ///
-    /// The dissipation is the Coulomb rate `f p |ds/dt|` integrated by the trapezoidal rule,
-    /// `f (p_start + p_end)/2 |s|` per slipping cell (Johnson, *Contact Mechanics*, section 7.2,
-    /// for the frictional work `q ds` with `|q| = f p` while slipping). It is never negative.
-    /// The end-of-step traction alone (`f p_end |s|`) is the rectangle rule, first order in the
-    /// time step.
+    /// The dissipation is the Coulomb work `f p |ds|` (Johnson, *Contact Mechanics*, section
+    /// 7.2, for the frictional work `q ds` with `|q| = f p` while slipping), integrated over the
+    /// sub-step by `dissipation.rs` with the onsets, the start-set slip rates and the curvature
+    /// of the slipping tractions taken into account. It is never negative. The end-of-step
+    /// traction alone (`f p_end |s|`) is the rectangle rule, first order in the time step; the
+    /// mean pressure times the slip is first order too, near moving edges.
     fn advance(&mut self, load: LoadPoint, a: f64, step: usize) -> Result<(f64, usize)> {
         let n = self.x.len();
         let f = self.friction;
@@ -270,6 +290,8 @@ impl Marcher {
                 _ => {}
             }
         }
+        self.start_cells.copy_from_slice(&self.cells);
+        let a0 = self.half_width;
         let d_sigma = load.bulk() - self.load.map_or(0.0, |p| p.bulk());
         if load.shear() == 0.0 && d_sigma == 0.0 && self.traction.iter().all(|q| *q == 0.0) {
             // Pressing alone (the first leg of a normal-first ramp): zero traction sticks and
@@ -313,10 +335,15 @@ impl Marcher {
                     Cell::Stick => 0.0,
                 };
             }
-            apply(&mut self.kernel, &self.dense, &self.known, &mut self.work);
+            apply(
+                &mut self.kernel,
+                &self.dense,
+                &self.known,
+                &mut self.g_known,
+            );
             for i in 0..n {
                 self.rhs[i] = if self.cells[i] == Cell::Stick {
-                    -self.work[i] - 0.25 * PI * d_sigma * self.x[i]
+                    -self.g_known[i] - 0.25 * PI * d_sigma * self.x[i]
                 } else {
                     0.0
                 };
@@ -344,6 +371,7 @@ impl Marcher {
                         self.sub_slip[i] = 0.0;
                         let q = self.traction[i] + self.dq[i];
                         if q.abs() > f * self.pressure[i] + traction_tolerance {
+                            self.flag_traction[i] = q;
                             self.cells[i] = Cell::Slip(q.signum());
                             changed = true;
                         }
@@ -362,11 +390,14 @@ impl Marcher {
                     }
                 }
             }
+            if passes == 1 {
+                self.trial_slip.copy_from_slice(&self.sub_slip);
+            }
             if !changed {
                 break;
             }
         }
-        let mut energy = 0.0;
+        let energy = self.dissipation(a0, a, step)?;
         for i in 0..n {
             self.traction[i] += self.dq[i];
             if self.cells[i] == Cell::Out {
@@ -376,45 +407,9 @@ impl Marcher {
             self.slip[i] += s;
             self.slip_increment[i] += s;
             self.slip_travel[i] += s.abs();
-            if s != 0.0 {
-                let p = mean_pressure(
-                    self.half_width,
-                    a,
-                    self.x[i],
-                    self.pressure_start[i],
-                    self.pressure[i],
-                );
-                energy += f * p * s.abs() * self.width;
-            }
         }
         self.load = Some(load);
         self.half_width = a;
         Ok((energy, passes))
     }
-}
-
-/// Mean pressure at `x` over a sub-step in which the half-width moves from `a0` to `a1`, given
-/// the pressures `p0`, `p1` at its ends (compressive positive).
-///
-/// Every profile's pressure has the form `p = sqrt(u) psi` with `u = a^2 - x^2` and `psi`
-/// smooth (the normal problem's pressure formula, as in Johnson, *Contact Mechanics*, section 5.7: the factor
-/// `sqrt(a^2 - x^2)` multiplies a regular integral). Near an edge `sqrt(u)` is not smooth in
-/// time, and the trapezoidal rule on `p` then has an error `O(dt^1.5)` summed over a cell's
-/// steps. This is product integration (Atkinson, *An Introduction to Numerical Analysis*, 2nd
-/// ed., section 5.6): `sqrt(u)` is integrated exactly with `u` linear over the sub-step (exact for
-/// Hertz, where `a^2` is linear in P),
-/// `mean sqrt(u) = (2/3)(u0 + sqrt(u0 u1) + u1)/(sqrt(u0) + sqrt(u1))`, and `psi` by the
-/// trapezoidal rule; at an end where `u = 0` (the cell entered there) `psi` is taken from the
-/// other end.
-fn mean_pressure(a0: f64, a1: f64, x: f64, p0: f64, p1: f64) -> f64 {
-    let u0 = (a0 * a0 - x * x).max(0.0);
-    let u1 = (a1 * a1 - x * x).max(0.0);
-    let (r0, r1) = (u0.sqrt(), u1.sqrt());
-    if r0 + r1 == 0.0 {
-        return 0.0;
-    }
-    let psi0 = if r0 > 0.0 { p0 / r0 } else { p1 / r1 };
-    let psi1 = if r1 > 0.0 { p1 / r1 } else { psi0 };
-    let root_mean = (2.0 / 3.0) * (u0 + r0 * r1 + u1) / (r0 + r1);
-    root_mean * 0.5 * (psi0 + psi1)
 }

@@ -24,9 +24,11 @@
 //! Moving edges: each increment is split internally at the loads (linear within the increment)
 //! where the contact half-width a(P) passes a cell centre. A cell joins the contact at that
 //! moment, stuck with zero traction and zero pressure, and stays in contact until the receding
-//! edge reaches its centre, where its pressure, and so its traction, is zero. The energy
-//! dissipated is `f p |s|` per slipping cell and sub-step with the sub-step's mean pressure (see
-//! `marcher::mean_pressure`); it is never negative.
+//! edge reaches its centre, where its pressure, and so its traction, is zero. The end state of
+//! a sub-step does not depend on the path inside it; the energy dissipated, `integral f p |ds|`
+//! over the slipping cells, does, and `dissipation.rs` integrates it to second order in the
+//! step (onset times, start-set slip rates, and the curvature of the slipping tractions, which
+//! costs one more stick solve); it is never negative.
 //!
 //! Stick and slip are reported kinematically, by the slip increment: a cell is labelled stuck in
 //! an increment when it slid less than `slip_tolerance` times `A f P`. That threshold labels only;
@@ -35,10 +37,11 @@
 //! This module owns only the overview above and the public paths; the work is done by stage:
 //! `types.rs` (options and reports), `kernel.rs` (the cell matrix), `solve.rs` (the stick cells'
 //! linear systems), `toeplitz.rs` (FFT products and exact inverses of stick runs), `marcher.rs`
-//! (the active set and the moving-edge sub-steps) and `cycles.rs` (the driver, per-cycle slip
-//! ranges and shakedown). It never holds code of its own, only declarations and re-exports.
+//! (the active set and the moving-edge sub-steps), `dissipation.rs` (the energy of a sub-step)
+//! and `cycles.rs` (the driver, per-cycle slip ranges and shakedown). It never holds code of its own, only declarations and re-exports.
 
 mod cycles;
+mod dissipation;
 mod kernel;
 mod marcher;
 mod solve;
