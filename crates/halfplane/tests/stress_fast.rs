@@ -195,3 +195,27 @@ fn fast_field_matches_the_direct_sum_on_a_dense_grid_at_the_surface() {
         }
     }
 }
+
+#[test]
+fn fast_field_accepts_surface_points_on_every_node_of_a_continuous_traction() {
+    // The traction is continuous (zero at the contact edges): the surface stress is finite at
+    // every node, including ±a. Both routes must return it, and agree. A surface point on a node
+    // where two of the fast route's near ranges meet, or on a contact edge where the linear part
+    // ends at a rounding-level value, was once refused as if it were a jump.
+    let t = partial_slip(1000);
+    let m = material();
+    let x: Vec<f64> = t.nodes().to_vec();
+    let z = vec![0.0; x.len()];
+    let fast = stress::field(&t, 0.0, &m, &x, &z).expect("fast route: finite on every node");
+    let direct = stress::field_direct(&t, 0.0, &m, &x, &z).expect("direct: finite on every node");
+    let peak = direct.sxx.iter().fold(0.0f64, |a, b| a.max(b.abs()));
+    for i in 0..x.len() {
+        assert!(
+            (fast.sxx[i] - direct.sxx[i]).abs() < 1e-11 * peak,
+            "surface sxx on node {i} (x = {}): fast {} vs direct {}",
+            x[i],
+            fast.sxx[i],
+            direct.sxx[i]
+        );
+    }
+}
