@@ -1,6 +1,6 @@
 //! Figures for halfplane, drawn from the same numbers the library computes: the paper's load-space,
-//! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, and the marching solver's
-//! fields and zones. SVG or PNG by file name, rendered in pure Rust with a bundled font.
+//! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
+//! fields and zones, and design maps of a sweep's rows ([`design_map_figure`]). SVG or PNG by file name, rendered in pure Rust with a bundled font.
 //!
 //! Each `*_figure` function returns a [`Figure`] (plain data: panels of named series) that
 //! [`write()`] renders, so callers and tests can inspect exactly what is drawn. The science behind
@@ -8,7 +8,10 @@
 //! march recorders ([`MarchedCycle`], [`FieldRecorder`], [`StepFields`]) live in
 //! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
+mod map;
 mod render;
+
+pub use map::{contour_segments, design_map_figure, levels, sequential, DesignMap, MapColor};
 
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 
