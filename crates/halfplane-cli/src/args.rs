@@ -30,6 +30,9 @@ pub enum Command {
     /// Numerical time marching through the load history in [history]: stick zones, tractions,
     /// slip and dissipated energy at every increment, slip amplitude per cycle.
     March(MarchArgs),
+    /// Runs every row of a design (grid, random or Latin hypercube) over numeric fields of a case:
+    /// the steady state (or a march) of each, on every core, streamed to CSV or Parquet.
+    Sweep(SweepArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
     #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
@@ -111,6 +114,24 @@ pub struct MarchArgs {
     /// Cells across the largest contact (overrides [solver] cells; default 400).
     #[arg(long)]
     pub cells: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// Sweep spec (TOML): a case file plus [sweep] (mode = "grid", "random" or
+    /// "latin-hypercube"; samples and seed for the last two; analysis = "steady" or "march")
+    /// and [sweep.vary] ("dotted.path" = [values] or { from, to, count, scale }).
+    pub spec: PathBuf,
+    /// Output file, ending in .csv or .parquet (Parquet needs the `parquet` feature).
+    #[arg(long, short)]
+    pub output: PathBuf,
+    /// Write only the I-th of N disjoint parts of the rows (1-based), e.g. in a Slurm job array
+    /// --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT.
+    #[arg(long, value_name = "I/N", value_parser = crate::commands::sweep::parse_shard)]
+    pub shard: Option<(u64, u64)>,
+    /// Worker threads [default: HALFPLANE_NUM_THREADS if set, else every core].
+    #[arg(long)]
+    pub threads: Option<usize>,
 }
 
 /// The figures `halfplane plot` draws, each with its own options.

@@ -5,6 +5,7 @@ pub mod evolve;
 pub mod march;
 pub mod plot;
 pub mod steady;
+pub mod sweep;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -16,6 +17,7 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
+        Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
     }
 }
 
