@@ -147,6 +147,9 @@ pub enum PlotCommand {
     MarchFields(MarchFieldsArgs),
     /// Stick intervals against increment number (needs [history]).
     MarchZones(MarchZonesArgs),
+    /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
+    /// colour map of any numeric column with contours (takes the sweep's output, not a case).
+    DesignMap(DesignMapArgs),
 }
 
 /// What every figure takes: the case and the output file.
@@ -212,6 +215,29 @@ pub struct MarchZonesArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct DesignMapArgs {
+    /// A sweep's output (.csv, or .parquet with the `parquet` feature).
+    pub sweep: PathBuf,
+    /// Output file, ending in .svg or .png.
+    #[arg(long, short)]
+    pub output: PathBuf,
+    /// Column on the x axis (a varied path, e.g. cycle.point2.shear).
+    #[arg(long)]
+    pub x: String,
+    /// Column on the y axis (a varied path).
+    #[arg(long)]
+    pub y: String,
+    /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
+    /// slip_right_1 (filled bands with contours).
+    #[arg(long, default_value = "regime")]
+    pub color: String,
+    /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show
+    /// (repeatable, e.g. --where friction.coefficient=0.3).
+    #[arg(long = "where", value_name = "PATH=VALUE")]
+    pub filter: Vec<String>,
 }
 
 /// For an unknown command or figure, a line naming the valid ones (clap's message names only

@@ -1,13 +1,14 @@
 //! The commands, one module each: a validated configuration resolved from the raw arguments
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
+pub mod design_map;
 pub mod evolve;
 pub mod march;
 pub mod plot;
 pub mod steady;
 pub mod sweep;
 
-use crate::args::Command;
+use crate::args::{Command, PlotCommand};
 use anyhow::Result;
 
 /// Resolves the command's configuration and runs it.
@@ -16,6 +17,9 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Steady(a) => steady::run(&steady::SteadyConfig::resolve(a)?),
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
+        Command::Plot(PlotCommand::DesignMap(a)) => {
+            design_map::run(&design_map::DesignMapConfig::resolve(a)?)
+        }
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
         Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
     }

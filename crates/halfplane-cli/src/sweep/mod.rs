@@ -10,6 +10,7 @@
 pub mod csv;
 #[cfg(feature = "parquet")]
 pub mod parquet;
+pub mod read;
 pub mod spec;
 pub mod template;
 
