@@ -122,7 +122,7 @@ pub struct SweepArgs {
     /// "latin-hypercube"; samples and seed for the last two; analysis = "steady" or "march")
     /// and [sweep.vary] ("dotted.path" = [values] or { from, to, count, scale }).
     pub spec: PathBuf,
-    /// Output file, ending in .csv or .parquet (Parquet needs the `parquet` feature).
+    /// Output file, ending in .csv or .parquet.
     #[arg(long, short)]
     pub output: PathBuf,
     /// Write only the I-th of N disjoint parts of the rows (1-based), e.g. in a Slurm job array
@@ -219,7 +219,7 @@ pub struct MarchZonesArgs {
 
 #[derive(Args, Debug)]
 pub struct DesignMapArgs {
-    /// A sweep's output (.csv, or .parquet with the `parquet` feature).
+    /// A sweep's output (.csv or .parquet).
     pub sweep: PathBuf,
     /// Output file, ending in .svg or .png.
     #[arg(long, short)]

@@ -25,7 +25,7 @@ const MARCH_CHUNK_ROWS: usize = 64;
 pub enum OutputFormat {
     /// Comma-separated values with a header line.
     Csv,
-    /// Apache Parquet (needs the `parquet` feature).
+    /// Apache Parquet (needs the `parquet` feature, on by default).
     Parquet,
 }
 
@@ -68,8 +68,9 @@ fn output_format(path: &Path) -> Result<OutputFormat> {
         Some("csv") => Ok(OutputFormat::Csv),
         Some("parquet") if cfg!(feature = "parquet") => Ok(OutputFormat::Parquet),
         Some("parquet") => bail!(
-            "cannot write {}: this halfplane was built without Parquet output; build it with the \
-             `parquet` feature (cargo install --path crates/halfplane-cli --features parquet, or \
+            "cannot write {}: this halfplane was built without Parquet output (the `parquet` \
+             feature, on by default, was turned off with --no-default-features); build it with \
+             --features parquet (cargo install --path crates/halfplane-cli --features parquet, or \
              cargo run --release -p halfplane-cli --features parquet -- sweep ...), or write .csv",
             path.display()
         ),

@@ -3,7 +3,7 @@
 //! A spec is a case file plus a `[sweep]` section ([`spec`]). Its case is resolved once
 //! ([`template`]); each row puts its numbers in and runs the steady analysis (or a march). Rows
 //! are solved on every core by the library's batch engine and handed over in order, chunk by
-//! chunk, to a writer ([`csv`], or Parquet with the `parquet` feature), so output of any length
+//! chunk, to a writer ([`csv`], or Parquet with the `parquet` feature, on by default), so output of any length
 //! is streamed. Column names are a public interface: the varied paths as written, then
 //! [`STEADY_COLUMNS`], then (march sweeps) [`MARCH_COLUMNS`].
 

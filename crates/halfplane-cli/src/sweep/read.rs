@@ -38,7 +38,7 @@ pub fn read(path: &Path, wanted: &[&str]) -> Result<SweepTable> {
         Some("parquet") => parquet(path, wanted),
         #[cfg(not(feature = "parquet"))]
         Some("parquet") => bail!(
-            "cannot read {}: this halfplane was built without Parquet support; build it with the `parquet` feature, or give the sweep's .csv",
+            "cannot read {}: this halfplane was built without Parquet support (--no-default-features); build it with --features parquet, or give the sweep's .csv",
             path.display()
         ),
         _ => csv(path, wanted),
