@@ -39,6 +39,9 @@ pub enum Command {
     /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
     /// Crossland, Ruiz F1/F2, MWCM; critical distances and lives with the constants of [fatigue]).
     Fatigue(FatigueArgs),
+    /// Runs every row of a design (grid, random or Latin hypercube) over numeric fields of a case:
+    /// the steady state (or a march) of each, on every core, streamed to CSV or Parquet.
+    Sweep(SweepArgs),
     /// Draws a figure as SVG or PNG (by the output file name).
     #[command(subcommand)]
     #[command(subcommand_value_name = "FIGURE", subcommand_help_heading = "Figures")]
@@ -164,6 +167,24 @@ pub struct FatigueArgs {
     pub format: FormatArgs,
 }
 
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// Sweep spec (TOML): a case file plus [sweep] (mode = "grid", "random" or
+    /// "latin-hypercube"; samples and seed for the last two; analysis = "steady" or "march")
+    /// and [sweep.vary] ("dotted.path" = [values] or { from, to, count, scale }).
+    pub spec: PathBuf,
+    /// Output file, ending in .csv or .parquet.
+    #[arg(long, short)]
+    pub output: PathBuf,
+    /// Write only the I-th of N disjoint parts of the rows (1-based), e.g. in a Slurm job array
+    /// --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT.
+    #[arg(long, value_name = "I/N", value_parser = crate::commands::sweep::parse_shard)]
+    pub shard: Option<(u64, u64)>,
+    /// Worker threads [default: HALFPLANE_NUM_THREADS if set, else every core].
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
+
 /// The figures `halfplane plot` draws, each with its own options.
 #[derive(Subcommand, Debug)]
 pub enum PlotCommand {
@@ -189,6 +210,9 @@ pub enum PlotCommand {
     /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
     /// [history]).
     SurfaceProfiles(SurfaceProfilesArgs),
+    /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
+    /// colour map of any numeric column with contours (takes the sweep's output, not a case).
+    DesignMap(DesignMapArgs),
 }
 
 /// The stress components a map can show.
@@ -391,6 +415,29 @@ pub struct MatchFigureArgs {
     pub figure: FigureArgs,
     #[command(flatten)]
     pub test: TestArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct DesignMapArgs {
+    /// A sweep's output (.csv or .parquet).
+    pub sweep: PathBuf,
+    /// Output file, ending in .svg or .png.
+    #[arg(long, short)]
+    pub output: PathBuf,
+    /// Column on the x axis (a varied path, e.g. cycle.point2.shear).
+    #[arg(long)]
+    pub x: String,
+    /// Column on the y axis (a varied path).
+    #[arg(long)]
+    pub y: String,
+    /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
+    /// slip_right_1 (filled bands with contours).
+    #[arg(long, default_value = "regime")]
+    pub color: String,
+    /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show
+    /// (repeatable, e.g. --where friction.coefficient=0.3).
+    #[arg(long = "where", value_name = "PATH=VALUE")]
+    pub filter: Vec<String>,
 }
 
 /// For an unknown command or figure, a line naming the valid ones (clap's message names only

@@ -10,4 +10,5 @@ pub mod case;
 pub mod commands;
 pub mod output;
 pub mod report;
+pub mod sweep;
 pub mod units;

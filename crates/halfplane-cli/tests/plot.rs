@@ -44,16 +44,41 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
 fn every_readme_figure_command_writes_a_png_of_the_committed_size() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let commands: Vec<Vec<&str>> = readme
-        .lines()
-        .filter_map(|l| {
-            l.trim()
-                .strip_prefix("cargo run --release -p halfplane-cli -- ")
-        })
-        .filter(|c| c.starts_with("plot "))
-        .map(|c| c.split_whitespace().collect())
-        .collect();
+    let shown = |command: &str| -> Vec<Vec<&str>> {
+        readme
+            .lines()
+            .filter_map(|l| {
+                l.trim()
+                    .strip_prefix("cargo run --release -p halfplane-cli -- ")
+            })
+            .filter(|c| c.starts_with(command))
+            .map(|c| c.split_whitespace().collect())
+            .collect()
+    };
+    let commands = shown("plot ");
     let target = |c: &[&str]| c[c.iter().position(|a| *a == "-o").expect("-o") + 1].to_string();
+    // A figure drawn from a sweep's output (design-map) needs the sweep the README runs before
+    // it: each README sweep runs first, into the scratch directory, and a plot command reading
+    // its output reads it there.
+    let scratch = Scratch::new("readme");
+    let mut sweeps: Vec<(String, String)> = Vec::new();
+    for c in shown("sweep ") {
+        let written = target(&c);
+        let out = scratch.out(Path::new(&written).file_name().unwrap().to_str().unwrap());
+        let out = out.to_str().unwrap().to_string();
+        let args: Vec<&str> = c
+            .iter()
+            .map(|a| if *a == written { out.as_str() } else { a })
+            .collect();
+        let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
+            .args(&args)
+            .current_dir(&root)
+            .output()
+            .expect("run halfplane");
+        assert!(o.status.success(), "{c:?}: {}", stderr(&o));
+        sweeps.push((written, out));
+    }
+    let sweeps = &sweeps;
     let mut drawn: Vec<String> = commands.iter().map(|c| target(c)).collect();
     drawn.sort();
     let mut committed: Vec<String> = std::fs::read_dir(root.join("docs"))
@@ -64,7 +89,6 @@ fn every_readme_figure_command_writes_a_png_of_the_committed_size() {
         .collect();
     committed.sort();
     assert_eq!(drawn, committed, "README plot commands against docs/*.png");
-    let scratch = Scratch::new("readme");
     std::thread::scope(|s| {
         for c in &commands {
             let scratch = &scratch;
@@ -74,7 +98,11 @@ fn every_readme_figure_command_writes_a_png_of_the_committed_size() {
                 let out = scratch.out(Path::new(&docs).file_name().unwrap().to_str().unwrap());
                 let args: Vec<&str> = c
                     .iter()
-                    .map(|a| if *a == docs { out.to_str().unwrap() } else { a })
+                    .map(|a| match sweeps.iter().find(|(written, _)| written == a) {
+                        Some((_, there)) => there.as_str(),
+                        None if *a == docs => out.to_str().unwrap(),
+                        None => a,
+                    })
                     .collect();
                 let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
                     .args(&args)

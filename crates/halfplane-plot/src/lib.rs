@@ -2,6 +2,7 @@
 //! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
 //! fields and zones, and contour maps of the stresses and fatigue parameters below the contact
 //! with the surface profiles of the cycle. SVG or PNG by file name, rendered in pure Rust with a bundled font.
+//! fields and zones, and design maps of a sweep's rows ([`design_map_figure`]). SVG or PNG by file name, rendered in pure Rust with a bundled font.
 //!
 //! Each `*_figure` function returns a [`Figure`] (plain data: panels of named series) that
 //! [`write()`] renders, so callers and tests can inspect exactly what is drawn. The science behind
@@ -17,6 +18,10 @@ mod render;
 pub use contour::GridMap;
 pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
 pub use matching::match_figure;
+mod map;
+
+pub use map::{contour_segments, design_map_figure, levels, sequential, DesignMap, MapColor};
+
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 
 pub use halfplane::record::{FieldRecorder, MarchedCycle, StepFields};

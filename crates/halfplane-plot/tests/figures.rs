@@ -149,6 +149,15 @@ fn check_drawn(f: &Figure, svg: &str) {
                 let n: usize = s.pieces.iter().map(|p| p.len() / 2).sum();
                 assert!(count(2) >= n, "{:?}: too few segments", s.name);
             }
+            Style::Filled((r, g, b)) => {
+                let fill = format!("#{r:02X}{g:02X}{b:02X}");
+                let n: usize = s.pieces.iter().map(|p| p.len() / 2).sum();
+                let drawn = elements(svg, "rect")
+                    .iter()
+                    .filter(|c| attribute(c, "fill") == fill)
+                    .count();
+                assert!(drawn >= n, "{:?}: {drawn} cells for {n}", s.name);
+            }
         }
     }
 }
@@ -448,4 +457,44 @@ fn match_figure_draws_both_sides_with_the_reports_edge_shears() {
         }
     }
     check_svg(&f);
+}
+
+#[test]
+fn a_design_map_draws_every_cell_its_bands_and_contours() {
+    use halfplane_plot::{design_map_figure, DesignMap, MapColor};
+    // v = x y on a 20 x 10 grid, with the last two columns missing (as gross sliding would be).
+    let points: Vec<(f64, f64)> = (0..20)
+        .flat_map(|i| (0..10).map(move |j| (i as f64, 0.1 * j as f64)))
+        .collect();
+    let values = points
+        .iter()
+        .map(|&(x, y)| (x < 18.0).then_some(x * y))
+        .collect();
+    let map = DesignMap {
+        x_label: "cycle.point2.shear".into(),
+        y_label: "friction.coefficient".into(),
+        color_label: "slip_right_1".into(),
+        points,
+        color: MapColor::Numeric(values),
+    };
+    let f = design_map_figure(&map).unwrap();
+    check_svg(&f);
+    let series = &f.panels[0].series;
+    let cells: usize = series
+        .iter()
+        .filter(|s| matches!(s.style, Style::Filled(_)))
+        .map(|s| s.pieces[0].len() / 2)
+        .sum();
+    assert_eq!(cells, 200, "every row is one cell");
+    let n = names(&f);
+    assert!(
+        n.contains(&"contours".to_string()) && n.contains(&"no value".to_string()),
+        "{n:?}"
+    );
+    let missing = series.iter().find(|s| s.name == "no value").unwrap();
+    assert_eq!(
+        missing.pieces[0].len() / 2,
+        20,
+        "two columns of ten have no value"
+    );
 }

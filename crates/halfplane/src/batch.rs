@@ -8,7 +8,9 @@
 //! not depend on the number of threads: every row is solved by the same sequential code.
 
 use crate::error::{Error, Result};
+use crate::history::History;
 use crate::labels::{PerEdge, PerPoint};
+use crate::march::{self, MarchOptions, MarchResult};
 use crate::steady::{self, Regime, SteadyOptions, SteadyState};
 use crate::{Contact, Cycle};
 use rayon::prelude::*;
@@ -230,6 +232,74 @@ pub fn steady_summary(
     steady::analyse(contact, cycle, options).map(|state| SteadySummary::of(&state))
 }
 
+/// The columns a march adds to a summary row, in output order (a public interface). The names are
+/// those of the `march` command's cycle table and JSON (`energy`, `max_slip_amplitude`,
+/// `shakedown_cycle`); the final stick interval is `final_stick_left`/`final_stick_right`, since
+/// `stick_left`/`stick_right` already name the steady state's zone in [`STEADY_COLUMNS`].
+pub const MARCH_COLUMNS: [&str; 5] = [
+    "energy",
+    "max_slip_amplitude",
+    "shakedown_cycle",
+    "final_stick_left",
+    "final_stick_right",
+];
+
+/// One marched history in the few numbers a design map needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarchSummary {
+    energy: Option<f64>,
+    max_slip_amplitude: Option<f64>,
+    shakedown_cycle: Option<usize>,
+    final_stick: Option<[f64; 2]>,
+}
+
+impl MarchSummary {
+    /// The summary of a marched history: the last cycle's energy and largest slip amplitude (the
+    /// steady cycle's, once shaken down; `None` for a history without cycles), the shakedown
+    /// cycle, and the largest stick interval at the last increment (`None` when nothing sticks).
+    pub fn of(result: &MarchResult) -> Self {
+        let last = result.cycles.last();
+        Self {
+            energy: last.map(|c| c.energy),
+            max_slip_amplitude: last.map(|c| c.max_slip_amplitude()),
+            shakedown_cycle: result.shakedown_cycle,
+            final_stick: result.steps.last().and_then(|s| s.largest_stick()),
+        }
+    }
+
+    /// Energy dissipated in the last cycle (per unit thickness).
+    pub fn energy(&self) -> Option<f64> {
+        self.energy
+    }
+
+    /// Largest slip amplitude along x in the last cycle (half the peak-to-peak slip).
+    pub fn max_slip_amplitude(&self) -> Option<f64> {
+        self.max_slip_amplitude
+    }
+
+    /// The first cycle that the next one repeats, if any.
+    pub fn shakedown_cycle(&self) -> Option<usize> {
+        self.shakedown_cycle
+    }
+
+    /// The largest stick interval `[left, right]` at the last increment.
+    pub fn final_stick(&self) -> Option<[f64; 2]> {
+        self.final_stick
+    }
+}
+
+/// A march through `history`, summarised ([`march::march`] then [`MarchSummary::of`]).
+///
+/// # Errors
+/// Every error of [`march::march`].
+pub fn march_summary(
+    contact: &Contact,
+    history: &History,
+    options: &MarchOptions,
+) -> Result<MarchSummary> {
+    march::march(contact, history, options, |_, _| {}).map(|r| MarchSummary::of(&r))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -305,6 +375,41 @@ mod tests {
         assert!(Batch::new(Some(1))
             .and_then(|b| b.with_chunk_rows(0))
             .is_err());
+    }
+
+    #[test]
+    fn a_march_summary_carries_the_last_cycle_and_increment() {
+        let (first, second) = reference::cycle().as_given();
+        let history = crate::history::History::in_phase(
+            first,
+            second,
+            2,
+            20,
+            crate::history::Ramp::NormalFirst,
+            10,
+        )
+        .expect("valid history");
+        let options = MarchOptions::default()
+            .with_cells(100)
+            .expect("valid cells");
+        let contact = reference::hertz();
+        let result = march::march(&contact, &history, &options, |_, _| {}).expect("marches");
+        let summary = march_summary(&contact, &history, &options).expect("marches");
+        let last = result.cycles.last().expect("a cyclic history");
+        assert_eq!(summary.energy(), Some(last.energy));
+        assert_eq!(
+            summary.max_slip_amplitude(),
+            Some(last.max_slip_amplitude())
+        );
+        assert_eq!(summary.shakedown_cycle(), result.shakedown_cycle);
+        assert_eq!(
+            summary.final_stick(),
+            result.steps.last().and_then(|s| s.largest_stick())
+        );
+        assert!(
+            summary.energy().is_some_and(|e| e > 0.0),
+            "partial slip dissipates"
+        );
     }
 
     #[test]

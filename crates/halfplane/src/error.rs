@@ -250,6 +250,20 @@ pub enum Error {
         valid: &'static str,
     },
 
+    /// A range of values (a sweep axis) whose ends are out of order, or that a logarithmic
+    /// scale cannot span.
+    #[error("invalid {field} = {{ from = {from}, to = {to} }}: {problem}")]
+    InvalidRange {
+        /// Name of the range, as the input spells it.
+        field: String,
+        /// The first end.
+        from: f64,
+        /// The last end.
+        to: f64,
+        /// What is wrong and what would be valid, in words.
+        problem: &'static str,
+    },
+
     /// The worker pool of a batch could not be started (the system refused the threads).
     #[error("could not start the worker threads: {message}")]
     ThreadPool {

@@ -22,7 +22,8 @@
 //! # Ok::<(), halfplane::Error>(())
 //! ```
 //!
-//! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`profile`] (gap profiles and their integrals), [`normal`] (the
+//! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`design`] (grid,
+//! random and Latin-hypercube sweep designs, reproducible row by row), [`profile`] (gap profiles and their integrals), [`normal`] (the
 //! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone
 //! along the cycle), [`slip_map`] (the slip-zone map of the paper's Figure 5), [`record`]
@@ -34,6 +35,7 @@
 pub mod asymptotic;
 pub mod batch;
 pub mod closed_form;
+pub mod design;
 pub mod error;
 pub mod evolution;
 pub mod fatigue;

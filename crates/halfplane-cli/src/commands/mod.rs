@@ -1,6 +1,7 @@
 //! The commands, one module each: a validated configuration resolved from the raw arguments
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
+pub mod design_map;
 pub mod evolve;
 pub mod fatigue;
 pub mod march;
@@ -8,8 +9,9 @@ pub mod matching;
 pub mod plot;
 pub mod steady;
 pub mod stress;
+pub mod sweep;
 
-use crate::args::Command;
+use crate::args::{Command, PlotCommand};
 use anyhow::Result;
 
 /// Resolves the command's configuration and runs it.
@@ -21,7 +23,11 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
         Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
+        Command::Plot(PlotCommand::DesignMap(a)) => {
+            design_map::run(&design_map::DesignMapConfig::resolve(a)?)
+        }
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
+        Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
     }
 }
 

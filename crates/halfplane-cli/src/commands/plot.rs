@@ -154,6 +154,9 @@ impl PlotConfig {
                 };
                 (&a.figure, case, figure)
             }
+            PlotCommand::DesignMap(_) => {
+                bail!("design-map draws a sweep's output, not a case: it is run by design_map::run")
+            }
             PlotCommand::MarchZones(a) => {
                 let case = load(&a.figure)?;
                 let history = case.history()?;

@@ -35,6 +35,17 @@ where
             vec![(x + SAMPLE / 2, y - 6), (x + SAMPLE / 2, y + 6)],
             stroke,
         )),
+        Style::Filled((r, g, b)) => root
+            .draw(&Rectangle::new(
+                [(x + 4, y - 6), (x + SAMPLE - 4, y + 6)],
+                RGBColor(r, g, b).filled(),
+            ))
+            .and_then(|()| {
+                root.draw(&Rectangle::new(
+                    [(x + 4, y - 6), (x + SAMPLE - 4, y + 6)],
+                    BLACK.mix(0.4).stroke_width(1),
+                ))
+            }),
     }
     .map_err(draw_error)
 }
@@ -79,6 +90,13 @@ where
                             piece
                                 .chunks_exact(2)
                                 .map(|c| PathElement::new(vec![c[0], c[1]], stroke)),
+                        )
+                        .map(|_| ()),
+                    Style::Filled((r, g, b)) => chart
+                        .draw_series(
+                            piece
+                                .chunks_exact(2)
+                                .map(|c| Rectangle::new([c[0], c[1]], RGBColor(r, g, b).filled())),
                         )
                         .map(|_| ()),
                 }

@@ -12,6 +12,9 @@ pub enum Style {
     Points,
     /// Disjoint segments: consecutive pairs of points.
     Segments,
+    /// Filled rectangles in this colour (RGB), whatever the palette index: consecutive pairs of
+    /// points are opposite corners (cells of a map).
+    Filled((u8, u8, u8)),
 }
 
 /// A named data series; `pieces` are drawn separately (gaps between them) under one legend entry.

@@ -81,6 +81,11 @@ pub(super) fn plan(figure: &Figure, size: (u32, u32)) -> Result<Vec<LegendPlan<'
                         Style::Segments => {
                             pts.chunks_exact(2).any(|c| crosses(c[0], c[1], rect, 2.0))
                         }
+                        Style::Filled(_) => pts.chunks_exact(2).any(|c| {
+                            let (x0, x1) = (c[0].0.min(c[1].0), c[0].0.max(c[1].0));
+                            let (y0, y1) = (c[0].1.min(c[1].1), c[0].1.max(c[1].1));
+                            x0 <= rect.2 && x1 >= rect.0 && y0 <= rect.3 && y1 >= rect.1
+                        }),
                         Style::Line | Style::Dashed => match pts.len() {
                             1 => crosses(pts[0], pts[0], rect, 2.0),
                             _ => pts.windows(2).any(|w| crosses(w[0], w[1], rect, 2.0)),

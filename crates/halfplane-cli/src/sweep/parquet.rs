@@ -1,0 +1,165 @@
+//! Parquet output of a sweep (the `parquet` feature): the same columns as the CSV, typed. The
+//! varied paths and the numbers are `Float64`, `regime` and `error` are `Utf8`,
+//! `shakedown_cycle` is `UInt64`; a value the row does not have is null (never NaN), and `error`
+//! is null when the row succeeded. Each chunk of rows is written as it arrives; row groups hold
+//! at most [`ROW_GROUP_ROWS`] rows, so memory stays bounded whatever the sweep's length.
+
+use super::spec::Analysis;
+use super::template::Outcome;
+use super::{csv::part_path, Layout, RowSink};
+use anyhow::{anyhow, Context, Result};
+use arrow_array::builder::{Float64Builder, StringBuilder, UInt64Builder};
+use arrow_array::{ArrayRef, RecordBatch};
+use arrow_schema::{DataType, Field, Schema, SchemaRef};
+use parquet::arrow::ArrowWriter;
+use parquet::basic::Compression;
+use parquet::file::properties::WriterProperties;
+use std::fs::File;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// The most rows in one row group.
+pub const ROW_GROUP_ROWS: usize = 65_536;
+
+/// One row, as the workers hand it over.
+#[derive(Debug, Clone)]
+pub struct ParquetRow {
+    values: Vec<f64>,
+    outcome: Outcome,
+}
+
+/// Writes a sweep's rows to `PATH.part`, renamed to `PATH` when the sweep completes.
+pub struct ParquetSink {
+    writer: ArrowWriter<File>,
+    schema: SchemaRef,
+    layout: Layout,
+    part: PathBuf,
+    path: PathBuf,
+}
+
+/// The schema of a sweep's rows.
+pub fn schema(layout: &Layout) -> Schema {
+    let mut fields: Vec<Field> = layout
+        .varied
+        .iter()
+        .map(|v| Field::new(&v.path, DataType::Float64, false))
+        .collect();
+    for name in &layout.columns()[layout.varied.len()..] {
+        let kind = match name.as_str() {
+            "regime" | "error" => DataType::Utf8,
+            "shakedown_cycle" => DataType::UInt64,
+            _ => DataType::Float64,
+        };
+        fields.push(Field::new(name, kind, true));
+    }
+    Schema::new(fields)
+}
+
+impl ParquetSink {
+    /// Creates the output (Snappy-compressed).
+    pub fn create(path: &Path, layout: &Layout) -> Result<Self> {
+        let part = part_path(path);
+        let file =
+            File::create(&part).with_context(|| format!("cannot create {}", part.display()))?;
+        let schema = Arc::new(schema(layout));
+        let props = WriterProperties::builder()
+            .set_compression(Compression::SNAPPY)
+            .set_max_row_group_row_count(Some(ROW_GROUP_ROWS))
+            .build();
+        let writer = ArrowWriter::try_new(file, schema.clone(), Some(props))
+            .map_err(|e| anyhow!("cannot write {}: {e}", part.display()))?;
+        Ok(Self {
+            writer,
+            schema,
+            layout: layout.clone(),
+            part,
+            path: path.to_path_buf(),
+        })
+    }
+
+    fn batch(&self, rows: &[ParquetRow]) -> Result<RecordBatch> {
+        let n = rows.len();
+        let mut columns: Vec<ArrayRef> = Vec::new();
+        for j in 0..self.layout.varied.len() {
+            let mut b = Float64Builder::with_capacity(n);
+            rows.iter().for_each(|r| b.append_value(r.values[j]));
+            columns.push(Arc::new(b.finish()));
+        }
+        let mut regime = StringBuilder::new();
+        for r in rows {
+            regime.append_option(r.outcome.steady.map(|s| s.regime().as_str()));
+        }
+        columns.push(Arc::new(regime.finish()));
+        for k in 0..8 {
+            let mut b = Float64Builder::with_capacity(n);
+            for r in rows {
+                b.append_option(
+                    r.outcome
+                        .steady
+                        .map(|s| s.numbers()[k])
+                        .filter(|v| v.is_finite()),
+                );
+            }
+            columns.push(Arc::new(b.finish()));
+        }
+        let mut error = StringBuilder::new();
+        for r in rows {
+            error.append_option(Some(r.outcome.error.as_str()).filter(|e| !e.is_empty()));
+        }
+        columns.push(Arc::new(error.finish()));
+        if self.layout.analysis == Analysis::March {
+            let march = |f: &dyn Fn(&halfplane::batch::MarchSummary) -> Option<f64>| {
+                let mut b = Float64Builder::with_capacity(n);
+                for r in rows {
+                    b.append_option(r.outcome.march.as_ref().and_then(f));
+                }
+                Arc::new(b.finish()) as ArrayRef
+            };
+            columns.push(march(&|m| m.energy()));
+            columns.push(march(&|m| m.max_slip_amplitude()));
+            let mut shakedown = UInt64Builder::with_capacity(n);
+            for r in rows {
+                shakedown.append_option(
+                    r.outcome
+                        .march
+                        .and_then(|m| m.shakedown_cycle())
+                        .map(|k| k as u64),
+                );
+            }
+            columns.push(Arc::new(shakedown.finish()));
+            columns.push(march(&|m| m.final_stick().map(|z| z[0])));
+            columns.push(march(&|m| m.final_stick().map(|z| z[1])));
+        }
+        RecordBatch::try_new(self.schema.clone(), columns)
+            .map_err(|e| anyhow!("cannot assemble the rows for {}: {e}", self.part.display()))
+    }
+}
+
+impl RowSink for ParquetSink {
+    type Item = ParquetRow;
+
+    fn encode(_: &Layout, values: &[f64], outcome: Outcome) -> ParquetRow {
+        ParquetRow {
+            values: values.to_vec(),
+            outcome,
+        }
+    }
+
+    fn write(&mut self, rows: Vec<ParquetRow>) -> Result<()> {
+        let batch = self.batch(&rows)?;
+        self.writer
+            .write(&batch)
+            .map_err(|e| anyhow!("cannot write {}: {e}", self.part.display()))
+    }
+
+    fn finish(self) -> Result<()> {
+        let Self {
+            writer, part, path, ..
+        } = self;
+        writer
+            .close()
+            .map_err(|e| anyhow!("cannot write {}: {e}", part.display()))?;
+        std::fs::rename(&part, &path)
+            .with_context(|| format!("cannot rename {} to {}", part.display(), path.display()))
+    }
+}

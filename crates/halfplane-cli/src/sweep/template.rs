@@ -1,0 +1,408 @@
+//! The case of a sweep, resolved once, and the case of each row: the template's values with the
+//! varied numbers put in.
+//!
+//! Two routes give a row its case:
+//! - **direct** (the varied fields are all among the material, the friction coefficient, the
+//!   profile's numbers and the cycle's loads, and the analysis is `steady`): the resolved case is
+//!   kept and only the parts a varied number feeds are rebuilt, with the same library constructors
+//!   in the same order as the case reader (`case::parse`), so a row gets the same values and the
+//!   same error as if its case file had been written out and read;
+//! - **re-read** (anything else: history, solver, a march): the number is written into the case's
+//!   TOML table, which is then read as a case file. This costs tens of microseconds a row, nothing
+//!   beside a march.
+//!
+//! A test runs both routes on the same rows and compares them.
+
+use super::spec::{Analysis, Spec, Varied};
+use crate::case::{self, Case};
+use anyhow::{bail, Result};
+use halfplane::batch::{self, MarchSummary, SteadySummary};
+use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, Shape, SteadyOptions};
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// A number the direct route can put in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Slot {
+    YoungsModulus,
+    PoissonRatio,
+    Friction,
+    Radius,
+    FlatHalfWidth,
+    Coefficient,
+    Exponent,
+    /// `cycle.point{1,2}.{normal, shear, bulk}`: point 0 or 1, part 0, 1 or 2.
+    Load(usize, usize),
+}
+
+fn slot(keys: &[String]) -> Option<Slot> {
+    let keys: Vec<&str> = keys.iter().map(String::as_str).collect();
+    Some(match keys.as_slice() {
+        ["material", "youngs_modulus"] => Slot::YoungsModulus,
+        ["material", "poisson_ratio"] => Slot::PoissonRatio,
+        ["friction", "coefficient"] => Slot::Friction,
+        ["profile", "radius"] => Slot::Radius,
+        ["profile", "flat_half_width"] => Slot::FlatHalfWidth,
+        ["profile", "coefficient"] => Slot::Coefficient,
+        ["profile", "exponent"] => Slot::Exponent,
+        ["cycle", point, part] => {
+            let p = ["point1", "point2"].iter().position(|n| n == point)?;
+            let q = ["normal", "shear", "bulk"].iter().position(|n| n == part)?;
+            Slot::Load(p, q)
+        }
+        _ => return None,
+    })
+}
+
+/// What one row computed: the summaries that succeeded and, if anything failed, why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    /// The steady state (absent when the case could not be built, the analysis failed, or a march
+    /// sweep's case has no `[cycle]`).
+    pub steady: Option<SteadySummary>,
+    /// The march (march sweeps only; absent when it failed).
+    pub march: Option<MarchSummary>,
+    /// Empty when the row succeeded; otherwise the error (in a march sweep, prefixed by the
+    /// analysis that failed, `steady:` or `march:`, joined by `; `).
+    pub error: String,
+}
+
+/// The resolved case of a sweep and how each row's case is made from it.
+#[derive(Debug, Clone)]
+pub struct Template {
+    table: Table,
+    dir: PathBuf,
+    varied: Vec<Varied>,
+    analysis: Analysis,
+    base: Case,
+    /// The direct route's slots (one per varied field) and the case's cycle.
+    direct: Option<(Vec<Slot>, Cycle)>,
+}
+
+impl Template {
+    /// Resolves the spec's case (it must be a valid case on its own: the varied fields hold
+    /// placeholder values) and checks that it has what the analysis needs.
+    pub fn new(spec: &Spec, dir: &Path) -> Result<Self> {
+        let text = toml::to_string(&spec.case)?;
+        let base = case::parse(&text, dir)
+            .map_err(|e| e.context("the spec without [sweep] must be a valid case"))?;
+        match spec.analysis {
+            Analysis::Steady if base.cycle.is_none() => bail!(
+                "missing section [cycle]: a steady sweep analyses the case's cycle (for a march sweep set analysis = \"march\" in [sweep])"
+            ),
+            Analysis::March => {
+                base.history()?;
+            }
+            _ => {}
+        }
+        let slots: Option<Vec<Slot>> = match spec.analysis {
+            Analysis::Steady => spec.varied.iter().map(|v| slot(&v.keys)).collect(),
+            Analysis::March => None,
+        };
+        let direct = slots.zip(base.cycle);
+        Ok(Self {
+            table: spec.case.clone(),
+            dir: dir.to_path_buf(),
+            varied: spec.varied.clone(),
+            analysis: spec.analysis,
+            base,
+            direct,
+        })
+    }
+
+    /// Forces the re-read route (for tests comparing the two).
+    pub fn reread(mut self) -> Self {
+        self.direct = None;
+        self
+    }
+
+    /// Whether rows take the direct route.
+    pub fn is_direct(&self) -> bool {
+        self.direct.is_some()
+    }
+
+    /// Runs the analysis of the row whose varied fields take `values` (in the spec's order; an
+    /// integer field's value must already be whole).
+    pub fn solve(&self, values: &[f64]) -> Outcome {
+        match &self.direct {
+            Some((slots, cycle)) => {
+                let result =
+                    self.direct_case(slots, *cycle, values)
+                        .and_then(|(contact, cycle)| {
+                            batch::steady_summary(&contact, &cycle, &SteadyOptions::default())
+                        });
+                match result {
+                    Ok(summary) => Outcome {
+                        steady: Some(summary),
+                        march: None,
+                        error: String::new(),
+                    },
+                    Err(e) => failed(e.to_string()),
+                }
+            }
+            None => match self.reread_case(values) {
+                Ok(case) => self.analyse(&case),
+                Err(e) => failed(format!("{e:#}")),
+            },
+        }
+    }
+
+    /// The row's contact and cycle, rebuilt from the resolved case where a varied number feeds
+    /// them: material, friction, profile, then the points, as `case::parse` builds them.
+    fn direct_case(
+        &self,
+        slots: &[Slot],
+        cycle: Cycle,
+        values: &[f64],
+    ) -> halfplane::Result<(Cow<'_, Contact>, Cycle)> {
+        let base = &self.base.contact;
+        let (mut e, mut nu) = (
+            base.material.youngs_modulus(),
+            base.material.poisson_ratio(),
+        );
+        let mut f = base.friction.value();
+        let mut shape = base.profile.shape().clone();
+        let (p1, p2) = cycle.as_given();
+        let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk()]);
+        let (mut material, mut friction, mut profile, mut points) = (false, false, false, false);
+        for (slot, &v) in slots.iter().zip(values) {
+            match (slot, &mut shape) {
+                (Slot::YoungsModulus, _) => (e, material) = (v, true),
+                (Slot::PoissonRatio, _) => (nu, material) = (v, true),
+                (Slot::Friction, _) => (f, friction) = (v, true),
+                (Slot::Radius, Shape::Hertz { radius })
+                | (
+                    Slot::Radius,
+                    Shape::FlatRounded {
+                        edge_radius: radius,
+                        ..
+                    },
+                ) => (*radius, profile) = (v, true),
+                (
+                    Slot::FlatHalfWidth,
+                    Shape::FlatRounded {
+                        flat_half_width, ..
+                    },
+                ) => (*flat_half_width, profile) = (v, true),
+                (Slot::Coefficient, Shape::PowerLaw { coefficient, .. }) => {
+                    (*coefficient, profile) = (v, true)
+                }
+                (Slot::Exponent, Shape::PowerLaw { exponent, .. }) => {
+                    (*exponent, profile) = (v, true)
+                }
+                (Slot::Load(p, q), _) => (loads[*p][*q], points) = (v, true),
+                // The case reader rejects a profile field its kind does not use, so the
+                // template's case (already read) has none.
+                _ => {}
+            }
+        }
+        let contact = if material || friction || profile {
+            let material = match material {
+                true => Material::new(e, nu)?,
+                false => base.material,
+            };
+            let friction = match friction {
+                true => Friction::new(f)?,
+                false => base.friction,
+            };
+            let profile = match (profile, shape) {
+                (true, Shape::Hertz { radius }) => Profile::hertz(radius)?,
+                (
+                    true,
+                    Shape::FlatRounded {
+                        flat_half_width,
+                        edge_radius,
+                    },
+                ) => Profile::flat_rounded(flat_half_width, edge_radius)?,
+                (
+                    true,
+                    Shape::PowerLaw {
+                        coefficient,
+                        exponent,
+                    },
+                ) => Profile::power_law(coefficient, exponent)?,
+                _ => base.profile.clone(),
+            };
+            Cow::Owned(Contact::new(profile, material, friction))
+        } else {
+            Cow::Borrowed(base)
+        };
+        let cycle = match points {
+            true => {
+                let [a, b] = loads;
+                Cycle::new(
+                    LoadPoint::new("cycle.point1", a[0], a[1], a[2])?,
+                    LoadPoint::new("cycle.point2", b[0], b[1], b[2])?,
+                )
+            }
+            false => cycle,
+        };
+        Ok((contact, cycle))
+    }
+
+    /// The row's case, read from the case table with the varied numbers written in.
+    fn reread_case(&self, values: &[f64]) -> Result<Case> {
+        let mut table = self.table.clone();
+        for (varied, &v) in self.varied.iter().zip(values) {
+            set(&mut table, &varied.keys, number(v, varied.integer));
+        }
+        case::parse(&toml::to_string(&table)?, &self.dir)
+    }
+
+    /// The analyses of a case read for the row.
+    fn analyse(&self, case: &Case) -> Outcome {
+        let options = SteadyOptions::default();
+        let steady = case
+            .cycle
+            .map(|cycle| batch::steady_summary(&case.contact, &cycle, &options));
+        match self.analysis {
+            Analysis::Steady => match steady {
+                Some(Ok(summary)) => Outcome {
+                    steady: Some(summary),
+                    march: None,
+                    error: String::new(),
+                },
+                Some(Err(e)) => failed(e.to_string()),
+                // Template::new requires [cycle] of a steady sweep, and rows keep the sections.
+                None => failed("missing section [cycle]".into()),
+            },
+            Analysis::March => {
+                let mut errors = Vec::new();
+                let steady = match steady {
+                    Some(Ok(s)) => Some(s),
+                    Some(Err(e)) => {
+                        errors.push(format!("steady: {e}"));
+                        None
+                    }
+                    None => None,
+                };
+                let march = case.history().and_then(|history| {
+                    Ok(batch::march_summary(&case.contact, &history, &case.solver)?)
+                });
+                let march = match march {
+                    Ok(m) => Some(m),
+                    Err(e) => {
+                        errors.push(format!("march: {e:#}"));
+                        None
+                    }
+                };
+                Outcome {
+                    steady,
+                    march,
+                    error: errors.join("; "),
+                }
+            }
+        }
+    }
+}
+
+fn failed(error: String) -> Outcome {
+    Outcome {
+        steady: None,
+        march: None,
+        error,
+    }
+}
+
+/// The TOML value of a varied number: an integer where the case writes one.
+fn number(v: f64, integer: bool) -> Value {
+    if integer && v.abs() < 9e18 {
+        Value::Integer(v as i64)
+    } else {
+        Value::Float(v)
+    }
+}
+
+/// Writes `value` at `keys` (which the spec checked exist in the table).
+fn set(table: &mut Table, keys: &[String], value: Value) {
+    let Some((last, parents)) = keys.split_last() else {
+        return;
+    };
+    let mut t = table;
+    for key in parents {
+        match t.get_mut(key) {
+            Some(Value::Table(inner)) => t = inner,
+            _ => return,
+        }
+    }
+    t.insert(last.clone(), value);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::spec;
+
+    /// A random sweep over every number the direct route puts in, over ranges that include
+    /// invalid values (negative radius, Poisson's ratio above 0.5, negative P) and gross sliding.
+    fn spec(profile: &str, vary_profile: &str) -> Spec {
+        let text = format!(
+            r#"[material]
+youngs_modulus = 200000.0
+poisson_ratio = 0.3
+[friction]
+coefficient = 0.6
+[profile]
+{profile}
+[cycle]
+point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}
+point2 = {{ normal = 1400.0, shear = 250.0, bulk = 20.0 }}
+[sweep]
+mode = "random"
+samples = 300
+seed = 11
+[sweep.vary]
+"material.youngs_modulus" = {{ from = 1e5, to = 3e5 }}
+"material.poisson_ratio" = {{ from = 0.2, to = 0.55 }}
+"friction.coefficient" = {{ from = 0.2, to = 0.9 }}
+{vary_profile}
+"cycle.point1.normal" = {{ from = -100.0, to = 2000.0 }}
+"cycle.point2.shear" = {{ from = 0.0, to = 900.0 }}
+"cycle.point1.bulk" = [-30.0, 0.0, 30.0]
+"#
+        );
+        spec::parse(&text).expect("valid spec")
+    }
+
+    #[test]
+    fn the_direct_route_agrees_with_reading_each_case() {
+        let cases = [
+            (
+                "kind = \"hertz\"\nradius = 50.0",
+                "\"profile.radius\" = { from = -10.0, to = 100.0 }",
+            ),
+            (
+                "kind = \"flat-rounded\"\nflat_half_width = 0.3\nradius = 50.0",
+                "\"profile.flat_half_width\" = { from = -0.1, to = 0.6 }\n\"profile.radius\" = { from = 10.0, to = 100.0, scale = \"log\" }",
+            ),
+            (
+                "kind = \"power-law\"\ncoefficient = 0.01\nexponent = 2.5",
+                "\"profile.coefficient\" = { from = 0.001, to = 0.1, scale = \"log\" }\n\"profile.exponent\" = { from = 0.5, to = 4.0 }",
+            ),
+        ];
+        for (profile, vary) in cases {
+            let spec = spec(profile, vary);
+            let direct = Template::new(&spec, Path::new(".")).expect("valid template");
+            assert!(direct.is_direct(), "{profile}: every path is a direct one");
+            let reread = direct.clone().reread();
+            let (mut failed, mut solved) = (0, 0);
+            let mut values = vec![0.0; spec.design.axes()];
+            for row in 0..spec.design.rows() {
+                spec.design.values(row, &mut values);
+                let (a, b) = (direct.solve(&values), reread.solve(&values));
+                assert_eq!(a, b, "{profile}, row {row}: {values:?}");
+                if a.error.is_empty() {
+                    solved += 1;
+                } else {
+                    failed += 1;
+                }
+            }
+            // Both kinds of row occur, so both the values and the errors were compared.
+            assert!(
+                solved > 30 && failed > 30,
+                "{profile}: {solved} solved, {failed} failed"
+            );
+        }
+    }
+}

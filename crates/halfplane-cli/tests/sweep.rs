@@ -1,0 +1,491 @@
+//! End-to-end tests of `halfplane sweep`: a grid against the Hertz closed form, shards against
+//! the whole sweep, seeds, a march sweep against `halfplane march`, the Figure-5 spec against the
+//! library's slip map, and bad specs.
+
+mod common;
+use common::{example, run, scratch, stderr, REFERENCE_CASE, REFERENCE_CONTACT};
+use halfplane::closed_form::{hertz_half_width, hertz_stick_zone};
+use std::path::Path;
+
+/// Runs a sweep of `spec` (text) into `out`, with extra arguments, and returns the output if it
+/// is text (CSV); panics on failure.
+fn sweep(dir: &Path, spec: &str, out: &str, extra: &[&str]) -> String {
+    let spec_path = dir.join("spec.toml");
+    std::fs::write(&spec_path, spec).unwrap();
+    let out = dir.join(out);
+    let mut args = vec![
+        "sweep",
+        spec_path.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    let o = run(&args);
+    assert!(o.status.success(), "sweep {extra:?}: {}", stderr(&o));
+    match out.extension().and_then(|e| e.to_str()) {
+        Some("csv") => std::fs::read_to_string(&out).unwrap(),
+        _ => String::new(),
+    }
+}
+
+/// The rows of a CSV (header first) as cells; the sweep's errors hold no line breaks.
+fn rows(csv: &str) -> Vec<Vec<String>> {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(csv.as_bytes());
+    reader
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .collect()
+}
+
+fn num(cell: &str) -> f64 {
+    cell.parse()
+        .unwrap_or_else(|_| panic!("{cell:?} is not a number"))
+}
+
+#[test]
+fn a_hertz_grid_matches_the_closed_form() {
+    // Q2, f and R vary; point 1 (Q = -250, sigma = -20) is the smaller-Q end for every Q2 >= 0,
+    // so dQ = Q2 + 250 and dsigma = sigma1 - sigma2 = -40. Closed forms (closed_form.rs, paper
+    // eqs. (24), (28), (30)): a_i^2 = 2 P_i A R/pi, d^2 = (A R/pi)(P1 + P2 - dQ/f),
+    // e = -A R dsigma/(8 f); stick zone [e - d, e + d]; slip zones a_i - m (left), a_i - n
+    // (right). The sweep's numbers went through substitution, the steady analysis and CSV
+    // formatting in full precision, so they must agree to rounding: 1e-12 relative to a.
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"cycle.point2.shear\" = {{ from = 0.0, to = 800.0, count = 17 }}\n\"friction.coefficient\" = [0.3, 0.6, 0.9]\n\"profile.radius\" = {{ from = 10.0, to = 1000.0, count = 3, scale = \"log\" }}\n"
+    );
+    let dir = scratch("sweep-hertz");
+    let table = rows(&sweep(&dir, &spec, "out.csv", &[]));
+    assert_eq!(
+        table[0].join(","),
+        "cycle.point2.shear,friction.coefficient,profile.radius,regime,stick_left,stick_right,half_width_1,half_width_2,slip_left_1,slip_left_2,slip_right_1,slip_right_2,error"
+    );
+    assert_eq!(table.len(), 1 + 17 * 3 * 3);
+    let a_compliance = 4.0 * (1.0 - 0.3f64 * 0.3) / 200_000.0;
+    let (mut partial, mut sliding) = (0, 0);
+    for row in &table[1..] {
+        let (q2, f, r) = (num(&row[0]), num(&row[1]), num(&row[2]));
+        let a = [1000.0, 1400.0].map(|p| hertz_half_width(a_compliance, r, p));
+        let close = |cell: &str, want: f64, what: &str| {
+            let got = num(cell);
+            assert!(
+                (got - want).abs() <= 1e-12 * a[1],
+                "Q2 = {q2}, f = {f}, R = {r}: {what} {got} vs closed form {want}"
+            );
+        };
+        match row[3].as_str() {
+            "partial-slip" => {
+                partial += 1;
+                let (d, e) = hertz_stick_zone(a_compliance, r, f, 2400.0, q2 + 250.0, -40.0)
+                    .expect("a stick zone in partial slip");
+                close(&row[4], e - d, "stick_left");
+                close(&row[5], e + d, "stick_right");
+                close(&row[6], a[0], "half_width_1");
+                close(&row[7], a[1], "half_width_2");
+                for (k, ai) in a.iter().enumerate() {
+                    close(&row[8 + k], ai - (d - e), "left slip zone a - m");
+                    close(&row[10 + k], ai - (e + d), "right slip zone a - n");
+                }
+            }
+            "full-stick" => {
+                // Eq. (1) with a_max: (dQ + pi a2 |dsigma|/4)/dP <= f; the stick zone is the
+                // smaller contact and nothing slips.
+                let ratio = (q2 + 250.0 + std::f64::consts::PI * a[1] * 40.0 / 4.0) / 400.0;
+                assert!(ratio <= f, "Q2 = {q2}, f = {f}: full stick needs eq. (1)");
+                close(&row[4], -a[0], "stick_left");
+                close(&row[5], a[0], "stick_right");
+                assert!(
+                    row[8..12].iter().all(|c| num(c) == 0.0),
+                    "no slip in full stick"
+                );
+            }
+            "gross-sliding" => {
+                sliding += 1;
+                assert!(
+                    q2 >= f * 1400.0 || 250.0 >= f * 1000.0,
+                    "Q2 = {q2}, f = {f}: slides"
+                );
+                assert!(
+                    row[4].is_empty() && row[8].is_empty(),
+                    "no stick zone when sliding"
+                );
+            }
+            // Outside the analysis (slip reversal with this tension): a row with its error.
+            "" => assert!(!row[12].is_empty(), "a failed row says why: {row:?}"),
+            other => panic!("unexpected regime {other:?}"),
+        }
+    }
+    assert!(
+        partial >= 60 && sliding >= 10,
+        "{partial} partial slip, {sliding} sliding"
+    );
+}
+
+const RANDOM: &str = "[sweep]\nmode = \"random\"\nsamples = 1000\nseed = 42\n[sweep.vary]\n\"cycle.point2.shear\" = { from = 0.0, to = 800.0 }\n\"profile.radius\" = { from = 10.0, to = 1000.0, scale = \"log\" }\n\"friction.coefficient\" = [0.3, 0.6]\n";
+
+#[test]
+fn shards_together_are_the_sweep_byte_for_byte() {
+    let dir = scratch("sweep-shards");
+    for mode in ["random", "latin-hypercube"] {
+        let spec = format!("{REFERENCE_CASE}{}", RANDOM.replace("random", mode));
+        let whole = sweep(&dir, &spec, "whole.csv", &["--threads", "2"]);
+        let one_thread = sweep(&dir, &spec, "one.csv", &["--threads", "1"]);
+        assert_eq!(
+            whole, one_thread,
+            "{mode}: the thread count changes nothing"
+        );
+        let mut lines = whole.split_inclusive('\n');
+        let header = lines.next().unwrap();
+        let body: String = lines.collect();
+        let mut joined = String::new();
+        for i in 1..=3 {
+            let shard = sweep(
+                &dir,
+                &spec,
+                &format!("shard{i}.csv"),
+                &["--shard", &format!("{i}/3")],
+            );
+            let rest = shard
+                .strip_prefix(header)
+                .expect("every shard has the header");
+            assert!(!rest.is_empty(), "{mode}: shard {i} of 3 is not empty");
+            joined.push_str(rest);
+        }
+        assert_eq!(
+            joined, body,
+            "{mode}: the shards in order are the whole sweep"
+        );
+        assert_eq!(body.lines().count(), 1000);
+    }
+}
+
+#[test]
+fn a_seed_fixes_the_rows() {
+    let dir = scratch("sweep-seed");
+    let spec = format!("{REFERENCE_CASE}{RANDOM}");
+    let first = sweep(&dir, &spec, "a.csv", &[]);
+    let again = sweep(&dir, &spec, "b.csv", &[]);
+    let other = sweep(&dir, &spec.replace("seed = 42", "seed = 43"), "c.csv", &[]);
+    assert_eq!(first, again, "the same seed gives the same rows");
+    let differ = first
+        .lines()
+        .zip(other.lines())
+        .skip(1)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differ > 990,
+        "another seed gives other rows: {differ} of 1000 differ"
+    );
+    // Every row stays inside its ranges (log scale: 10 to 1000).
+    for row in &rows(&first)[1..] {
+        let (q, r) = (num(&row[0]), num(&row[1]));
+        assert!(
+            (0.0..=800.0).contains(&q) && (10.0..=1000.0).contains(&r),
+            "{row:?}"
+        );
+        assert!(["0.3", "0.6"].contains(&row[2].as_str()));
+    }
+}
+
+#[test]
+fn a_march_sweep_adds_the_march_columns_and_matches_the_march_command() {
+    // Small: 60 cells, 2 cycles of 2 x 10 increments, two friction coefficients.
+    let case = format!(
+        "{REFERENCE_CASE}[history]\nkind = \"cycle\"\ncycles = 2\nsteps_per_half = 10\nramp_steps = 5\n[solver]\ncells = 60\n"
+    );
+    let dir = scratch("sweep-march");
+    let spec = format!(
+        "{case}[sweep]\nmode = \"grid\"\nanalysis = \"march\"\n[sweep.vary]\n\"friction.coefficient\" = [0.6, 0.9]\n"
+    );
+    let table = rows(&sweep(&dir, &spec, "march.csv", &[]));
+    assert_eq!(
+        table[0][10..].join(","),
+        "error,energy,max_slip_amplitude,shakedown_cycle,final_stick_left,final_stick_right"
+    );
+    for (row, f) in table[1..].iter().zip(["0.6", "0.9"]) {
+        assert_eq!(row[0], f);
+        assert_eq!(row[1], "partial-slip");
+        assert!(row[10].is_empty(), "f = {f}: {}", row[10]);
+        let case_path = dir.join(format!("case-{f}.toml"));
+        std::fs::write(
+            &case_path,
+            case.replace("coefficient = 0.6", &format!("coefficient = {f}")),
+        )
+        .unwrap();
+        let o = run(&["march", case_path.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let last = json["cycles"].as_array().unwrap().last().unwrap().clone();
+        let step = json["steps"].as_array().unwrap().last().unwrap().clone();
+        // The same march by the same code; the JSON's numbers are read back by serde_json's
+        // fast float parser, which may miss the last bit: 1e-14 relative.
+        let same = |cell: &str, json: &serde_json::Value, what: &str| {
+            let (got, want) = (num(cell), json.as_f64().unwrap());
+            assert!(
+                (got - want).abs() <= 1e-14 * want.abs(),
+                "{what}: {got} vs {want}"
+            );
+        };
+        same(&row[11], &last["energy"], "energy");
+        same(&row[12], &last["max_slip_amplitude"], "max_slip_amplitude");
+        let shakedown = json["shakedown_cycle"].as_u64().map(|k| k.to_string());
+        assert_eq!(Some(row[13].clone()).filter(|s| !s.is_empty()), shakedown);
+        let stick = step["largest_stick"].as_array().unwrap();
+        same(&row[14], &stick[0], "final_stick_left");
+        same(&row[15], &stick[1], "final_stick_right");
+        assert!(num(&row[11]) > 0.0, "partial slip dissipates");
+    }
+}
+
+#[test]
+fn the_figure_5_spec_gives_the_library_slip_map() {
+    // examples/sweep-fig5.toml shifts the Figure-5 cycle to Q1 = 0; its slip_right_1 must equal
+    // the library's Figure-5 value (slip_map::right_slip_zone) of the centred cycle
+    // (Q = -dQ/2 .. dQ/2), to rounding: 1e-12 of a.
+    use halfplane::slip_map::right_slip_zone;
+    use halfplane::{Cycle, LoadPoint};
+    let dir = scratch("sweep-fig5");
+    let out = dir.join("fig5.csv");
+    let o = run(&[
+        "sweep",
+        &example("sweep-fig5.toml"),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = rows(&std::fs::read_to_string(&out).unwrap());
+    let contact = halfplane::reference::hertz();
+    assert!(table.len() > 500);
+    for row in table[1..].iter().step_by(7) {
+        let (dq, p2) = (num(&row[0]), num(&row[1]));
+        let cycle = Cycle::new(
+            LoadPoint::new("point1", 1000.0, -0.5 * dq, 0.0).unwrap(),
+            LoadPoint::new("point2", p2, 0.5 * dq, 0.0).unwrap(),
+        );
+        let want = right_slip_zone(&contact, &cycle).expect("Figure 5 draws every point here");
+        let got = num(&row[9]);
+        assert!(
+            (got - want).abs() < 1e-12,
+            "dQ = {dq}, P2 = {p2}: {got} vs {want}"
+        );
+    }
+}
+
+#[test]
+fn bad_specs_are_errors_that_name_the_problem() {
+    let dir = scratch("sweep-bad");
+    let spec_path = dir.join("spec.toml");
+    let out = dir.join("out.csv");
+    let grid = "[sweep]\nmode = \"grid\"\n[sweep.vary]\n";
+    for (vary, expected) in [
+        (
+            "\"profile.radios\" = [1.0]",
+            "unknown path \"profile.radios\"",
+        ),
+        (
+            "\"profile.kind\" = [1.0]",
+            "\"profile.kind\" is not numeric",
+        ),
+        (
+            "\"profile.radius\" = { from = 1.0, to = 2.0, count = 0 }",
+            "count = 0: must be a whole number from 1",
+        ),
+        (
+            "\"profile.radius\" = { from = 2.0, to = 1.0, count = 3 }",
+            "from must not exceed to",
+        ),
+        (
+            "\"cycle.point2.shear\" = { from = 0.0, to = 10.0, count = 3, scale = \"log\" }",
+            "cannot reach or cross zero",
+        ),
+        (
+            "\"cycle.point1.shear\" = { from = -10.0, to = -1.0, count = 3, scale = \"log\" }",
+            "cannot reach or cross zero",
+        ),
+    ] {
+        std::fs::write(&spec_path, format!("{REFERENCE_CASE}{grid}{vary}\n")).unwrap();
+        let o = run(&[
+            "sweep",
+            spec_path.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{vary}");
+        assert!(stderr(&o).contains(expected), "{vary}: {}", stderr(&o));
+        assert!(!out.exists(), "no output for a bad spec");
+    }
+    // A steady sweep needs [cycle]; the output's name says its format.
+    std::fs::write(
+        &spec_path,
+        format!("{REFERENCE_CONTACT}{grid}\"profile.radius\" = [1.0]\n"),
+    )
+    .unwrap();
+    let o = run(&[
+        "sweep",
+        spec_path.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        stderr(&o).contains("missing section [cycle]"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&["sweep", &example("sweep-fig5.toml"), "-o", "out.txt"]);
+    assert!(
+        stderr(&o).contains("must end in .csv or .parquet"),
+        "{}",
+        stderr(&o)
+    );
+    for shard in ["0/3", "4/3", "1/0", "x"] {
+        let o = run(&[
+            "sweep",
+            &example("sweep-fig5.toml"),
+            "-o",
+            out.to_str().unwrap(),
+            "--shard",
+            shard,
+        ]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(
+            stderr(&o).contains("must be I/N with 1 <= I <= N"),
+            "{shard}: {}",
+            stderr(&o)
+        );
+    }
+}
+
+#[test]
+fn failed_rows_carry_their_error_and_the_rest_is_solved() {
+    // R from -50 to 50: negative radii fail in the library's constructor, the rest solve.
+    let dir = scratch("sweep-failed");
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"profile.radius\" = {{ from = -50.0, to = 50.0, count = 5 }}\n"
+    );
+    let table = rows(&sweep(&dir, &spec, "out.csv", &[]));
+    let errors: Vec<&str> = table[1..].iter().map(|r| r[10].as_str()).collect();
+    assert!(
+        errors[0].contains("invalid profile.radius = -50"),
+        "{errors:?}"
+    );
+    assert!(
+        errors[1].contains("invalid profile.radius = -25"),
+        "{errors:?}"
+    );
+    assert!(
+        errors[2].contains("invalid profile.radius = 0"),
+        "{errors:?}"
+    );
+    assert!(errors[3].is_empty() && errors[4].is_empty());
+    assert_eq!(table[5][1], "partial-slip");
+}
+
+#[cfg(not(feature = "parquet"))]
+#[test]
+fn parquet_output_without_the_feature_says_how_to_enable_it() {
+    let o = run(&["sweep", &example("sweep-fig5.toml"), "-o", "out.parquet"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--features parquet"), "{}", stderr(&o));
+}
+
+#[cfg(feature = "parquet")]
+#[test]
+fn parquet_holds_the_same_rows_as_the_csv() {
+    use halfplane_cli::sweep::read::{read, Values};
+    // A grid with failed rows (R <= 0), gross sliding (large Q2) and a march-free steady sweep:
+    // every column read back from Parquet equals the CSV's (numbers exactly, empty cells as
+    // nulls, text as written).
+    let dir = scratch("sweep-parquet");
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"profile.radius\" = {{ from = -50.0, to = 100.0, count = 7 }}\n\"cycle.point2.shear\" = [0.0, 250.0, 900.0]\n"
+    );
+    sweep(&dir, &spec, "out.csv", &[]);
+    sweep(&dir, &spec, "out.parquet", &[]);
+    let columns = [
+        "profile.radius",
+        "cycle.point2.shear",
+        "regime",
+        "stick_left",
+        "stick_right",
+        "half_width_1",
+        "half_width_2",
+        "slip_left_1",
+        "slip_left_2",
+        "slip_right_1",
+        "slip_right_2",
+        "error",
+    ];
+    let csv = read(&dir.join("out.csv"), &columns).unwrap();
+    let parquet = read(&dir.join("out.parquet"), &columns).unwrap();
+    assert_eq!(csv.rows, 21);
+    assert_eq!(csv.names, parquet.names);
+    for (k, name) in columns.iter().enumerate() {
+        match (&csv.columns[k], &parquet.columns[k]) {
+            (Values::Number(a), Values::Number(b)) => assert_eq!(a, b, "{name}"),
+            (Values::Text(a), Values::Text(b)) => assert_eq!(a, b, "{name}"),
+            (a, b) => panic!("{name}: {a:?} vs {b:?}"),
+        }
+    }
+    assert!(
+        matches!(&csv.columns[11], Values::Text(e) if e.iter().any(|e| e.contains("profile.radius")))
+    );
+}
+
+#[test]
+fn design_map_draws_a_sweep_and_names_what_it_cannot_draw() {
+    let dir = scratch("sweep-map");
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"cycle.point2.shear\" = {{ from = 0.0, to = 800.0, count = 9 }}\n\"profile.radius\" = [20.0, 50.0, 100.0]\n\"friction.coefficient\" = [0.3, 0.6]\n"
+    );
+    sweep(&dir, &spec, "out.csv", &[]);
+    let csv = dir.join("out.csv");
+    let svg = dir.join("map.svg");
+    let map = |extra: &[&str]| {
+        let mut args = vec![
+            "plot",
+            "design-map",
+            csv.to_str().unwrap(),
+            "--x",
+            "cycle.point2.shear",
+            "--y",
+            "profile.radius",
+            "-o",
+            svg.to_str().unwrap(),
+        ];
+        args.extend(extra);
+        run(&args)
+    };
+    // f varies too: rows repeat over (x, y) until --where picks one f.
+    let o = map(&[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("also varies friction.coefficient") && stderr(&o).contains("--where"),
+        "{}",
+        stderr(&o)
+    );
+    for color in ["regime", "slip_right_1"] {
+        let o = map(&["--where", "friction.coefficient=0.6", "--color", color]);
+        assert!(o.status.success(), "{color}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&svg).unwrap();
+        assert!(
+            text.contains("partial-slip") || text.contains("contours"),
+            "{color}"
+        );
+    }
+    let o = map(&[
+        "--where",
+        "friction.coefficient=0.6",
+        "--color",
+        "slip_rigth_1",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("no column \"slip_rigth_1\""),
+        "{}",
+        stderr(&o)
+    );
+    let o = map(&["--where", "friction.coefficient=0.45"]);
+    assert!(stderr(&o).contains("no rows to draw"), "{}", stderr(&o));
+}

@@ -1,0 +1,463 @@
+//! Design maps: a sweep's rows drawn over two of its varied inputs, coloured by a regime (one
+//! colour per category) or by a number (filled bands between contour levels, with the contour
+//! lines drawn on top).
+//!
+//! Rows that form a full grid over (x, y) are drawn as cells around each point (cell edges
+//! half-way between neighbouring values), and numeric maps get contour lines by marching squares
+//! with linear interpolation along cell edges (Lorensen & Cline 1987, in its two-dimensional
+//! form; a saddle cell is split by its centre value, the mean of its corners). Scattered rows (a
+//! random or Latin-hypercube sweep) are drawn as small squares, without contours.
+
+use crate::{Figure, Legend, Panel, PlotError, Series, Style};
+
+/// The colour of each row: a category (a regime name) or a number (absent where the row has no
+/// value: gross sliding, or a failed case).
+#[derive(Debug, Clone, PartialEq)]
+pub enum MapColor {
+    /// One name per row (an empty name is drawn as "error").
+    Category(Vec<String>),
+    /// One number per row.
+    Numeric(Vec<Option<f64>>),
+}
+
+/// The data of a design map.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignMap {
+    /// The x axis label (the varied path).
+    pub x_label: String,
+    /// The y axis label.
+    pub y_label: String,
+    /// What the colour shows (the column name).
+    pub color_label: String,
+    /// (x, y) of each row.
+    pub points: Vec<(f64, f64)>,
+    /// The colour of each row.
+    pub color: MapColor,
+}
+
+/// Colours of the regimes the library names, and of anything else.
+const CATEGORY_COLORS: [(&str, (u8, u8, u8)); 4] = [
+    ("full-stick", (0, 140, 70)),
+    ("partial-slip", (86, 150, 220)),
+    ("gross-sliding", (220, 50, 32)),
+    ("error", (150, 150, 150)),
+];
+const OTHER_COLORS: [(u8, u8, u8); 4] =
+    [(230, 140, 0), (150, 70, 170), (0, 160, 190), (140, 90, 40)];
+/// Cells without a value in a numeric map.
+const NO_VALUE: (u8, u8, u8) = (215, 215, 215);
+
+/// The viridis colour map at five stops (van der Walt & Smith, matplotlib 2.0), interpolated
+/// linearly: perceptually ordered and readable in grey and by colour-blind readers.
+const VIRIDIS: [(f64, f64, f64); 5] = [
+    (68.0, 1.0, 84.0),
+    (59.0, 82.0, 139.0),
+    (33.0, 145.0, 140.0),
+    (94.0, 201.0, 98.0),
+    (253.0, 231.0, 37.0),
+];
+
+/// The colour at fraction `t` (0 to 1) of the colour map.
+pub fn sequential(t: f64) -> (u8, u8, u8) {
+    let t = t.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = t - i as f64;
+    let (a, b) = (VIRIDIS[i], VIRIDIS[i + 1]);
+    let mix = |p: f64, q: f64| (p + (q - p) * f).round() as u8;
+    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// Contour levels strictly inside `(lo, hi)`: multiples of a 1, 2 or 5 step chosen for about
+/// `target` bands.
+pub fn levels(lo: f64, hi: f64, target: usize) -> Vec<f64> {
+    if hi <= lo || !lo.is_finite() || !hi.is_finite() {
+        return Vec::new();
+    }
+    let raw = (hi - lo) / target.max(1) as f64;
+    let magnitude = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * magnitude)
+        .find(|&s| s >= raw)
+        .unwrap_or(10.0 * magnitude);
+    let first = (lo / step).floor() as i64 + 1;
+    (first..)
+        .map(|k| k as f64 * step)
+        .take_while(|&v| v < hi)
+        .filter(|&v| v > lo)
+        .collect()
+}
+
+/// The sorted distinct values of `v`.
+fn distinct(v: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut d: Vec<f64> = v.collect();
+    d.sort_by(f64::total_cmp);
+    d.dedup();
+    d
+}
+
+/// Cell edges around sorted values: half-way between neighbours, and half a spacing beyond
+/// the ends (a single value gets a unit-free width of 1% of its magnitude, or 1).
+fn edges(values: &[f64]) -> Vec<f64> {
+    let n = values.len();
+    if n == 1 {
+        let h = 0.01 * values[0].abs().max(1.0);
+        return vec![values[0] - h, values[0] + h];
+    }
+    let mut e = Vec::with_capacity(n + 1);
+    e.push(values[0] - 0.5 * (values[1] - values[0]));
+    e.extend(values.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+    e.push(values[n - 1] + 0.5 * (values[n - 1] - values[n - 2]));
+    e
+}
+
+/// A full grid: the distinct x and y values and, for each (iy, ix), the row there.
+struct Grid {
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    row: Vec<usize>,
+}
+
+fn grid(points: &[(f64, f64)]) -> Option<Grid> {
+    let xs = distinct(points.iter().map(|p| p.0));
+    let ys = distinct(points.iter().map(|p| p.1));
+    if xs.len().checked_mul(ys.len())? != points.len() {
+        return None;
+    }
+    let mut row = vec![usize::MAX; points.len()];
+    for (i, &(x, y)) in points.iter().enumerate() {
+        let ix = xs.binary_search_by(|v| v.total_cmp(&x)).ok()?;
+        let iy = ys.binary_search_by(|v| v.total_cmp(&y)).ok()?;
+        let slot = &mut row[iy * xs.len() + ix];
+        if *slot != usize::MAX {
+            return None;
+        }
+        *slot = i;
+    }
+    Some(Grid { xs, ys, row })
+}
+
+/// The segments where the field `value(ix, iy)` on the grid `xs` × `ys` crosses `level`, as
+/// pairs of points. Cells with a missing corner are skipped.
+pub fn contour_segments(
+    xs: &[f64],
+    ys: &[f64],
+    value: impl Fn(usize, usize) -> Option<f64>,
+    level: f64,
+) -> Vec<((f64, f64), (f64, f64))> {
+    let mut out = Vec::new();
+    for iy in 0..ys.len().saturating_sub(1) {
+        for ix in 0..xs.len().saturating_sub(1) {
+            // Corners counter-clockwise from (ix, iy).
+            let at = [(ix, iy), (ix + 1, iy), (ix + 1, iy + 1), (ix, iy + 1)];
+            let Some(v) = at
+                .iter()
+                .map(|&(i, j)| value(i, j))
+                .collect::<Option<Vec<f64>>>()
+            else {
+                continue;
+            };
+            let p: Vec<(f64, f64)> = at.iter().map(|&(i, j)| (xs[i], ys[j])).collect();
+            // The crossing on edge k (from corner k to k + 1), if the level separates its ends.
+            let cross = |k: usize| -> Option<(f64, f64)> {
+                let (a, b) = (v[k], v[(k + 1) % 4]);
+                if (a < level) == (b < level) {
+                    return None;
+                }
+                let t = (level - a) / (b - a);
+                let (pa, pb) = (p[k], p[(k + 1) % 4]);
+                Some((pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1)))
+            };
+            let crossings: Vec<(usize, (f64, f64))> =
+                (0..4).filter_map(|k| cross(k).map(|c| (k, c))).collect();
+            match crossings.len() {
+                2 => out.push((crossings[0].1, crossings[1].1)),
+                4 => {
+                    // A saddle: the centre value decides which corners the level joins.
+                    let centre = 0.25 * v.iter().sum::<f64>();
+                    let c: Vec<(f64, f64)> = crossings.iter().map(|c| c.1).collect();
+                    if (centre < level) == (v[0] < level) {
+                        out.push((c[0], c[1]));
+                        out.push((c[2], c[3]));
+                    } else {
+                        out.push((c[3], c[0]));
+                        out.push((c[1], c[2]));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// The cell rectangle (opposite corners) of each row, and whether the rows form a grid.
+fn cells(points: &[(f64, f64)]) -> (Vec<[(f64, f64); 2]>, Option<Grid>) {
+    if let Some(g) = grid(points) {
+        let (ex, ey) = (edges(&g.xs), edges(&g.ys));
+        let mut rect = vec![[(0.0, 0.0); 2]; points.len()];
+        for iy in 0..g.ys.len() {
+            for ix in 0..g.xs.len() {
+                rect[g.row[iy * g.xs.len() + ix]] = [(ex[ix], ey[iy]), (ex[ix + 1], ey[iy + 1])];
+            }
+        }
+        return (rect, Some(g));
+    }
+    // Scattered rows: squares of 1/100 of each axis's span.
+    let span = |v: Vec<f64>| match (v.first(), v.last()) {
+        (Some(a), Some(b)) if b > a => 0.005 * (b - a),
+        (Some(a), _) => 0.005 * a.abs().max(1.0),
+        _ => 1.0,
+    };
+    let hx = span(distinct(points.iter().map(|p| p.0)));
+    let hy = span(distinct(points.iter().map(|p| p.1)));
+    let rect = points
+        .iter()
+        .map(|&(x, y)| [(x - hx, y - hy), (x + hx, y + hy)])
+        .collect();
+    (rect, None)
+}
+
+fn filled(name: String, rgb: (u8, u8, u8), rects: Vec<[(f64, f64); 2]>) -> Series {
+    Series {
+        name,
+        style: Style::Filled(rgb),
+        color: 0,
+        pieces: vec![rects.into_iter().flatten().collect()],
+    }
+}
+
+/// Formats a level for the legend: the fewest significant digits that tell the levels apart.
+fn label(v: f64) -> String {
+    let s = format!("{v:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.to_string()
+    }
+}
+
+/// The design map: one panel, cells coloured by category or by band, contours for a numeric
+/// colour on a grid. The legend (below the panel) names each category or band.
+///
+/// # Errors
+/// [`PlotError::Request`] when there are no rows, the colour has another length than the
+/// points, or a coordinate is not finite.
+pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
+    let n = map.points.len();
+    let len = match &map.color {
+        MapColor::Category(c) => c.len(),
+        MapColor::Numeric(c) => c.len(),
+    };
+    if n == 0 || len != n {
+        return Err(PlotError::Request(format!(
+            "a design map needs rows with a colour each: {n} points, {len} colours"
+        )));
+    }
+    if let Some(p) = map
+        .points
+        .iter()
+        .find(|p| !(p.0.is_finite() && p.1.is_finite()))
+    {
+        return Err(PlotError::Request(format!(
+            "a design map needs finite coordinates: found ({}, {})",
+            p.0, p.1
+        )));
+    }
+    let (rects, grid) = cells(&map.points);
+    let mut series = Vec::new();
+    let mut title = format!(
+        "{} over {} and {}",
+        map.color_label, map.x_label, map.y_label
+    );
+    match &map.color {
+        MapColor::Category(names) => {
+            let mut seen: Vec<&str> = Vec::new();
+            for name in names {
+                let name = if name.is_empty() {
+                    "error"
+                } else {
+                    name.as_str()
+                };
+                if !seen.contains(&name) {
+                    seen.push(name);
+                }
+            }
+            // Regimes in the library's order, then anything else as first seen.
+            seen.sort_by_key(|s| {
+                CATEGORY_COLORS
+                    .iter()
+                    .position(|c| c.0 == *s)
+                    .unwrap_or(CATEGORY_COLORS.len())
+            });
+            let mut other = OTHER_COLORS.iter().cycle();
+            for category in seen {
+                let rgb = CATEGORY_COLORS
+                    .iter()
+                    .find(|c| c.0 == category)
+                    .map(|c| c.1)
+                    .or_else(|| other.next().copied())
+                    .unwrap_or(NO_VALUE);
+                let mine = names
+                    .iter()
+                    .zip(&rects)
+                    .filter(|(s, _)| {
+                        s.as_str() == category || (s.is_empty() && category == "error")
+                    })
+                    .map(|(_, r)| *r)
+                    .collect();
+                series.push(filled(category.to_string(), rgb, mine));
+            }
+        }
+        MapColor::Numeric(values) => {
+            let finite = values.iter().flatten().copied().filter(|v| v.is_finite());
+            let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+            let levels = levels(lo, hi, 8);
+            let bounds: Vec<f64> = if lo.is_finite() {
+                std::iter::once(lo)
+                    .chain(levels.iter().copied())
+                    .chain(std::iter::once(hi))
+                    .collect()
+            } else {
+                Vec::new()
+            };
+            let bands = bounds
+                .len()
+                .saturating_sub(1)
+                .max(usize::from(lo.is_finite()));
+            let band = |v: f64| levels.iter().filter(|&&l| v >= l).count();
+            for b in 0..bands {
+                let mine: Vec<[(f64, f64); 2]> = values
+                    .iter()
+                    .zip(&rects)
+                    .filter(|(v, _)| v.is_some_and(|v| v.is_finite() && band(v) == b))
+                    .map(|(_, r)| *r)
+                    .collect();
+                if mine.is_empty() {
+                    continue;
+                }
+                let t = if bands > 1 {
+                    b as f64 / (bands - 1) as f64
+                } else {
+                    0.5
+                };
+                let name = match bounds.get(b + 1) {
+                    Some(&top) => format!("{} to {}", label(bounds[b]), label(top)),
+                    None => label(lo),
+                };
+                series.push(filled(name, sequential(t), mine));
+            }
+            let missing: Vec<[(f64, f64); 2]> = values
+                .iter()
+                .zip(&rects)
+                .filter(|(v, _)| !v.is_some_and(f64::is_finite))
+                .map(|(_, r)| *r)
+                .collect();
+            if !missing.is_empty() {
+                series.push(filled("no value".into(), NO_VALUE, missing));
+            }
+            match &grid {
+                Some(g) => {
+                    let value = |ix: usize, iy: usize| {
+                        values[g.row[iy * g.xs.len() + ix]].filter(|v| v.is_finite())
+                    };
+                    let mut segments = Vec::new();
+                    for &level in &levels {
+                        for (a, b) in contour_segments(&g.xs, &g.ys, value, level) {
+                            segments.push(a);
+                            segments.push(b);
+                        }
+                    }
+                    if !segments.is_empty() {
+                        series.push(Series::new("contours", Style::Segments, 3, segments));
+                    }
+                }
+                None => title.push_str(" (scattered rows: no contours)"),
+            }
+        }
+    }
+    Ok(Figure {
+        title,
+        panels: vec![Panel {
+            legend: Legend::Below,
+            title: String::new(),
+            x_label: map.x_label.clone(),
+            y_label: map.y_label.clone(),
+            series,
+        }],
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn contours_of_a_plane_lie_on_its_level_line() {
+        // v = x + 2y on a 5 x 4 grid: marching squares with linear interpolation is exact for a
+        // linear field, so every segment end lies on x + 2y = level to rounding (1e-12).
+        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let ys = [0.0, 0.5, 1.5, 3.0];
+        let value = |i: usize, j: usize| Some(xs[i] + 2.0 * ys[j]);
+        let segments = contour_segments(&xs, &ys, value, 3.3);
+        assert!(!segments.is_empty());
+        for (a, b) in segments {
+            for p in [a, b] {
+                assert!(
+                    (p.0 + 2.0 * p.1 - 3.3).abs() < 1e-12,
+                    "{p:?} off the level line"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn levels_are_round_and_inside() {
+        assert_eq!(levels(0.0, 1.0, 5), vec![0.2, 0.4, 0.6000000000000001, 0.8]);
+        assert!(levels(1.0, 1.0, 5).is_empty());
+        let l = levels(0.013, 0.871, 8);
+        assert!(l.iter().all(|&v| v > 0.013 && v < 0.871) && l.len() >= 4);
+    }
+
+    #[test]
+    fn a_grid_gets_cells_and_a_regime_map_one_series_per_regime() {
+        let points: Vec<(f64, f64)> = (0..3)
+            .flat_map(|i| (0..2).map(move |j| (i as f64, 10.0 * j as f64)))
+            .collect();
+        let names = [
+            "full-stick",
+            "partial-slip",
+            "partial-slip",
+            "",
+            "gross-sliding",
+            "partial-slip",
+        ];
+        let map = DesignMap {
+            x_label: "x".into(),
+            y_label: "y".into(),
+            color_label: "regime".into(),
+            points,
+            color: MapColor::Category(names.iter().map(|s| s.to_string()).collect()),
+        };
+        let f = design_map_figure(&map).expect("draws");
+        let s = &f.panels[0].series;
+        let got: Vec<(&str, usize)> = s
+            .iter()
+            .map(|s| (s.name.as_str(), s.pieces[0].len() / 2))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("full-stick", 1),
+                ("partial-slip", 3),
+                ("gross-sliding", 1),
+                ("error", 1)
+            ]
+        );
+        // Cells tile the grid: x edges at -0.5, 0.5, 1.5, 2.5.
+        assert_eq!(s[0].pieces[0], vec![(-0.5, -5.0), (0.5, 5.0)]);
+    }
+}
