@@ -188,7 +188,7 @@ impl Segment {
 /// - along each half, at 32 evenly spaced points with the exact boundary speeds (implicit
 ///   function theorem on the stick-zone equations), the first failure located by bisection to
 ///   1e-10 of the half. For Hertz the start-of-half test alone is sufficient (proved in
-///   `docs/validity.md`).
+///   `docs/validity.md`), so the sampling is skipped there.
 ///
 /// Errors: [`Error::SlipReversesInHalf`] (with the half, edge and fraction where the slip zone
 /// first stops growing) and [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the
