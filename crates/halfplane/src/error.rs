@@ -286,6 +286,23 @@ pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
     }
 }
 
+/// `check(field, value)` with the field's name built only if the value is rejected, so that
+/// validating a valid value allocates nothing (batches validate millions of rows).
+pub(crate) fn lazily_named(
+    check: fn(&str, f64) -> Result<f64>,
+    value: f64,
+    field: impl FnOnce() -> String,
+) -> Result<f64> {
+    check("", value).map_err(|e| match e {
+        Error::InvalidInput { value, valid, .. } => Error::InvalidInput {
+            field: field(),
+            value,
+            valid,
+        },
+        other => other,
+    })
+}
+
 /// Rejects a non-finite or non-positive value.
 pub(crate) fn positive(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
