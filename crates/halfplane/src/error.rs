@@ -242,6 +242,20 @@ pub enum Error {
         valid: &'static str,
     },
 
+    /// A value given for a parameter that the chosen kind does not use (a batch row's profile
+    /// parameter of another kind): rejected rather than ignored, so a misplaced value is seen.
+    #[error(
+        "{field} = {value} is not used by profile kind \"{kind}\": it must be NaN (not given)"
+    )]
+    NotUsed {
+        /// The parameter (column).
+        field: String,
+        /// The value given.
+        value: f64,
+        /// The kind that does not use it.
+        kind: &'static str,
+    },
+
     /// The worker pool of a batch could not be started (the system refused the threads).
     #[error("could not start the worker threads: {message}")]
     ThreadPool {
