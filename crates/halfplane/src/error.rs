@@ -275,6 +275,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 pub const MAGNITUDE_LIMIT: f64 = 1e30;
 
 /// Rejects a value that is not finite or whose magnitude exceeds [`MAGNITUDE_LIMIT`].
+#[inline]
 pub(crate) fn physical(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value.abs() <= MAGNITUDE_LIMIT {
         Ok(value)
@@ -288,6 +289,7 @@ pub(crate) fn physical(field: &str, value: f64) -> Result<f64> {
 }
 
 /// Rejects a value outside `[1/MAGNITUDE_LIMIT, MAGNITUDE_LIMIT]` (see [`MAGNITUDE_LIMIT`]).
+#[inline]
 pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && (1.0 / MAGNITUDE_LIMIT..=MAGNITUDE_LIMIT).contains(&value) {
         Ok(value)
@@ -302,6 +304,7 @@ pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
 
 /// `check(field, value)` with the field's name built only if the value is rejected, so that
 /// validating a valid value allocates nothing (batches validate millions of rows).
+#[inline]
 pub(crate) fn lazily_named(
     check: fn(&str, f64) -> Result<f64>,
     value: f64,
