@@ -16,6 +16,9 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 
 @pytest.fixture(scope="session")
 def cli() -> Path:
+    """The command, built with the same cargo profile as the extension (scripts/test builds both
+    in the dev profile): numbers are compared exactly, and a differently optimised build may
+    differ in the last bit."""
     given = os.environ.get("HALFPLANE_CLI")
     if given:
         return Path(given)
