@@ -16,6 +16,9 @@ use crate::{Contact, Cycle};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 
+pub mod row;
+pub use row::{ProfileKind, SteadyRow, STEADY_INPUT_COLUMNS};
+
 /// The environment variable that sizes the pool when no thread count is given.
 pub const THREADS_VARIABLE: &str = "HALFPLANE_NUM_THREADS";
 

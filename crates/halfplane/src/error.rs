@@ -264,6 +264,20 @@ pub enum Error {
         problem: &'static str,
     },
 
+    /// A value given for a parameter that the chosen kind does not use (a batch row's profile
+    /// parameter of another kind): rejected rather than ignored, so a misplaced value is seen.
+    #[error(
+        "{field} = {value} is not used by profile kind \"{kind}\": it must be NaN (not given)"
+    )]
+    NotUsed {
+        /// The parameter (column).
+        field: String,
+        /// The value given.
+        value: f64,
+        /// The kind that does not use it.
+        kind: &'static str,
+    },
+
     /// The worker pool of a batch could not be started (the system refused the threads).
     #[error("could not start the worker threads: {message}")]
     ThreadPool {
@@ -322,6 +336,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 pub const MAGNITUDE_LIMIT: f64 = 1e30;
 
 /// Rejects a value that is not finite or whose magnitude exceeds [`MAGNITUDE_LIMIT`].
+#[inline]
 pub(crate) fn physical(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value.abs() <= MAGNITUDE_LIMIT {
         Ok(value)
@@ -335,6 +350,7 @@ pub(crate) fn physical(field: &str, value: f64) -> Result<f64> {
 }
 
 /// Rejects a value outside `[1/MAGNITUDE_LIMIT, MAGNITUDE_LIMIT]` (see [`MAGNITUDE_LIMIT`]).
+#[inline]
 pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
     if value.is_finite() && (1.0 / MAGNITUDE_LIMIT..=MAGNITUDE_LIMIT).contains(&value) {
         Ok(value)
@@ -345,6 +361,24 @@ pub(crate) fn physical_positive(field: &str, value: f64) -> Result<f64> {
             valid: "a finite number from 1e-30 to 1e30",
         })
     }
+}
+
+/// `check(field, value)` with the field's name built only if the value is rejected, so that
+/// validating a valid value allocates nothing (batches validate millions of rows).
+#[inline]
+pub(crate) fn lazily_named(
+    check: fn(&str, f64) -> Result<f64>,
+    value: f64,
+    field: impl FnOnce() -> String,
+) -> Result<f64> {
+    check("", value).map_err(|e| match e {
+        Error::InvalidInput { value, valid, .. } => Error::InvalidInput {
+            field: field(),
+            value,
+            valid,
+        },
+        other => other,
+    })
 }
 
 /// Rejects a non-finite or non-positive value.

@@ -5,7 +5,7 @@
 //! the paper's Figure 1. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
 //! so `dQ = Q2 - Q1 >= 0`, and the paper's `dsigma = sigma1 - sigma2`.
 
-use crate::error::{physical, physical_positive, Result, MAGNITUDE_LIMIT};
+use crate::error::{lazily_named, physical, physical_positive, Result, MAGNITUDE_LIMIT};
 
 /// Normal force P (> 0), shear force Q (force per unit thickness) and bulk tension sigma (stress).
 ///
@@ -22,9 +22,9 @@ impl LoadPoint {
     /// Validates P > 0 and that all three are finite. `name` prefixes the field names in errors
     /// (for example `cycle.point1`).
     pub fn new(name: &str, normal: f64, shear: f64, bulk: f64) -> Result<Self> {
-        physical_positive(&format!("{name}.normal"), normal)?;
-        physical(&format!("{name}.shear"), shear)?;
-        physical(&format!("{name}.bulk"), bulk)?;
+        lazily_named(physical_positive, normal, || format!("{name}.normal"))?;
+        lazily_named(physical, shear, || format!("{name}.shear"))?;
+        lazily_named(physical, bulk, || format!("{name}.bulk"))?;
         Ok(Self {
             normal,
             shear,

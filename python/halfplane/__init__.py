@@ -1,0 +1,150 @@
+"""halfplane: frictional contact of elastically similar bodies idealised as half-planes, under
+in-phase cycles of normal load P, shear load Q and bulk tension sigma.
+
+The same analyses as the ``halfplane`` command, with the same numbers:
+
+- :func:`read_case`, :meth:`Case.from_toml` and the keyword constructor :class:`Case` build cases;
+- :func:`steady` (``halfplane steady --json`` as a :class:`SteadyResult`), :func:`evolve`
+  (``evolve --csv`` as a DataFrame), :func:`march` (``march``: steps, cycles, fields);
+- :func:`steady_batch`: a million cases in one call on every core; :mod:`halfplane.dask` on a
+  cluster.
+
+Units are those of the numbers given (consistent units; the examples use N, mm and MPa, so loads
+are N/mm per unit thickness). Sign conventions: P > 0 compresses; Q and sigma are positive as in
+the paper's Figure 1 (Andresen, Hills, Barber and Vazquez, IJSS 2019); x increases towards the
+edge that positive Q drives; bulk tension adds to the shear at the left edge. Errors are
+:class:`HalfplaneError` subclasses (bad input is :class:`InputError`, a ValueError) whose message
+names the field.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import numbers
+import warnings
+from typing import Any, Optional
+
+import pandas as pd
+
+from . import _halfplane
+from ._batch import STEADY_COLUMNS, steady_batch
+from ._halfplane import Case, read_case
+from ._results import MarchResult, Record, SteadyResult
+from .errors import (
+    HalfplaneError,
+    HalfplaneWarning,
+    InputError,
+    OutsideAnalysisError,
+    SolverError,
+)
+
+__version__: str = _halfplane.__version__
+
+#: The input columns of :func:`steady_batch`, in their documented order.
+STEADY_INPUT_COLUMNS = list(_halfplane.STEADY_INPUT_COLUMNS)
+
+
+def _count(name: str, value: Any) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or int(value) < 0:
+        raise InputError(f"invalid {name} = {value!r}: must be a whole number")
+    return int(value)
+
+
+def steady(case: Case) -> SteadyResult:
+    """The steady state of the case's cycle, as ``halfplane steady --json``: the regime, the
+    contact half-widths, the permanent stick zone [-m, n] and the slip zones, with the asymptotic
+    edge description in partial slip (see :class:`SteadyResult` for the fields, units and signs).
+
+    Raises :class:`InputError` when the case has no cycle, and :class:`OutsideAnalysisError` when
+    the cycle is outside the steady-state analysis (slip reversing inside a half, a stick zone
+    outside the smaller contact): :func:`march` covers those. A missing asymptotic estimate is a
+    :class:`HalfplaneWarning`, as the command's note on stderr.
+    """
+    text, note = _halfplane.steady_json(case)
+    if note is not None:
+        warnings.warn(note, HalfplaneWarning, stacklevel=2)
+    return SteadyResult(json.loads(text))
+
+
+#: pandas before 3 parses CSV numbers to within an ulp unless asked for round-trip precision.
+_OLD_PANDAS = int(pd.__version__.split(".")[0]) < 3
+
+
+def _read_csv(text: str) -> pd.DataFrame:
+    # Every number is parsed exactly as the command wrote it (shortest round-trip form).
+    if _OLD_PANDAS:
+        return pd.read_csv(io.StringIO(text), float_precision="round_trip")
+    return pd.read_csv(io.StringIO(text))
+
+
+def evolve(case: Case, points: int = 21) -> pd.DataFrame:
+    """The stick zone along both halves of the case's cycle, as ``halfplane evolve --csv``.
+
+    One row per point, ``points`` per half (ends included, 2 to 100,000); half 1 runs from point1
+    to point2 as given, half 2 back. Columns: ``half, fraction, normal, shear, bulk, half_width,
+    stick_left, stick_right, asymptotic_stick_left, asymptotic_stick_right, state`` (loads N/mm,
+    sigma MPa, lengths mm with the default units; ``state`` is ``full-stick``, ``partial-slip`` or
+    ``one-edge-slip``). ``DataFrame.attrs["regime"]`` holds the steady regime; the command's
+    warnings are :class:`HalfplaneWarning`.
+    """
+    csv, regime, notes = _halfplane.evolve_csv(case, _count("points", points))
+    for note in notes:
+        warnings.warn(note, HalfplaneWarning, stacklevel=2)
+    frame = _read_csv(csv)
+    frame.attrs["regime"] = regime
+    return frame
+
+
+def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> MarchResult:
+    """Numerical time marching through the case's load history (``[history]``), as
+    ``halfplane march``: any history (out of phase, harmonic, from rows), any profile.
+
+    ``cells`` overrides the case's ``[solver] cells`` (8 to 1,000,000; default 400) across the
+    largest contact of the history. Returns a :class:`MarchResult` with ``steps`` (the
+    ``march --csv`` columns), ``cycles`` (energy and largest slip amplitude per cycle) and
+    ``shakedown_cycle``.
+
+    With ``fields=True`` it also holds ``pressure``, ``traction``, ``slip`` and ``slip_increment``
+    of every increment, each a float64 array of shape (increments, cells): memory is
+    4 x 8 bytes x increments x cells, e.g. 3.8 MB for 300 increments of 400 cells and 1 GB for
+    100,000 increments of 320 cells (a MemoryError is raised if that cannot be allocated).
+
+    The GIL is released while marching; a march cannot be interrupted once started.
+    """
+    if cells is not None:
+        cells = _count("cells", cells)
+    out = _halfplane.march_report(case, cells, bool(fields))
+    cycles = pd.DataFrame(
+        out["cycles"], columns=["index", "energy", "max_slip_amplitude"]
+    ).astype({"index": "int64", "energy": "float64", "max_slip_amplitude": "float64"})
+    recorded = (
+        {k: out[k] for k in ("pressure", "traction", "slip", "slip_increment")} if fields else None
+    )
+    return MarchResult(
+        steps=_read_csv(out["steps_csv"]),
+        cycles=cycles,
+        shakedown_cycle=out["shakedown_cycle"],
+        x=out["x"],
+        fields=recorded,
+    )
+
+
+__all__ = [
+    "Case",
+    "HalfplaneError",
+    "HalfplaneWarning",
+    "InputError",
+    "MarchResult",
+    "OutsideAnalysisError",
+    "Record",
+    "STEADY_COLUMNS",
+    "STEADY_INPUT_COLUMNS",
+    "SolverError",
+    "SteadyResult",
+    "evolve",
+    "march",
+    "read_case",
+    "steady",
+    "steady_batch",
+]

@@ -1,0 +1,183 @@
+"""``steady_batch``: the steady state of many cases, one per row of a table."""
+
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+
+import numpy as np
+import pandas as pd
+
+from . import _halfplane
+from .errors import InputError
+
+#: The numeric input columns, in the order the native solver takes them.
+_NUMERIC = [
+    "youngs_modulus",
+    "poisson_ratio",
+    "friction",
+    "radius",
+    "flat_half_width",
+    "coefficient",
+    "exponent",
+    "normal1",
+    "shear1",
+    "bulk1",
+    "normal2",
+    "shear2",
+    "bulk2",
+]
+#: Profile parameters: a column no row uses may be absent.
+_OPTIONAL = {"radius", "flat_half_width", "coefficient", "exponent"}
+
+#: Output columns, in order (``regime`` first, ``error`` last).
+STEADY_COLUMNS: List[str] = list(_halfplane.STEADY_COLUMNS)
+
+_REGIMES = np.array(list(_halfplane.REGIMES) + [""], dtype=object)
+
+Table = Union[pd.DataFrame, Mapping[str, Any]]
+
+
+def _bad(message: str) -> InputError:
+    error = InputError(message)
+    return error
+
+
+def _get(table: Table, name: str) -> Any:
+    if isinstance(table, pd.DataFrame):
+        return table[name] if name in table.columns else None
+    return table.get(name)
+
+
+def _one_dimensional(name: str, values: Any) -> np.ndarray:
+    if isinstance(values, (pd.Series, pd.Index)):
+        array = values.to_numpy()
+    else:
+        array = np.asarray(values)
+    if array.ndim != 1:
+        raise _bad(f"column {name!r} must be one-dimensional, found shape {array.shape}")
+    return array
+
+
+def _numbers(name: str, values: Any) -> np.ndarray:
+    """The column as contiguous float64, NaN for missing values; ValueError naming it if it does not
+    hold numbers (strings, booleans, dates)."""
+    if isinstance(values, pd.Series):
+        dtype = values.dtype
+        if pd.api.types.is_bool_dtype(dtype) or not (
+            pd.api.types.is_numeric_dtype(dtype) or dtype == object
+        ):
+            raise _bad(f"column {name!r} must hold numbers; it has dtype {dtype}")
+        if pd.api.types.is_numeric_dtype(dtype):
+            return np.ascontiguousarray(values.to_numpy(dtype=np.float64, na_value=np.nan))
+    array = _one_dimensional(name, values)
+    if array.dtype.kind in "fiu":
+        return np.ascontiguousarray(array, dtype=np.float64)
+    if array.dtype == object:
+        kind = pd.api.types.infer_dtype(array, skipna=True)
+        if kind in ("floating", "integer", "mixed-integer-float", "decimal", "empty"):
+            return np.ascontiguousarray(
+                pd.to_numeric(pd.Series(array), errors="raise").to_numpy(
+                    dtype=np.float64, na_value=np.nan
+                )
+            )
+        raise _bad(f"column {name!r} must hold numbers; it holds {kind} values")
+    raise _bad(f"column {name!r} must hold numbers; it has dtype {array.dtype}")
+
+
+def _profiles(values: Any) -> Tuple[np.ndarray, List[str]]:
+    """Codes into a list of distinct names (-1 where missing); ValueError if not strings."""
+    if isinstance(values, pd.Series) and isinstance(values.dtype, pd.CategoricalDtype):
+        names = list(values.cat.categories)
+        if not all(isinstance(n, str) for n in names):
+            raise _bad("column 'profile' must hold profile names such as 'hertz'")
+        return values.cat.codes.to_numpy(dtype=np.int64), names
+    text = isinstance(values, pd.Series) and pd.api.types.is_string_dtype(values.dtype)
+    if text and values.dtype != object:
+        labels, distinct = pd.factorize(values, use_na_sentinel=True)
+        return np.ascontiguousarray(labels, dtype=np.int64), [str(u) for u in distinct]
+    if isinstance(values, pd.Series):
+        array = values.to_numpy(dtype=object)
+    else:
+        array = _one_dimensional("profile", values)
+    if array.dtype.kind != "U":
+        kind = pd.api.types.infer_dtype(array, skipna=True)
+        if kind not in ("string", "empty"):
+            raise _bad(
+                "column 'profile' must hold profile names (\"hertz\", \"flat-rounded\", "
+                f"\"power-law\"); it holds {kind} values"
+            )
+    codes, uniques = pd.factorize(array, use_na_sentinel=True)
+    return np.ascontiguousarray(codes, dtype=np.int64), [str(u) for u in uniques]
+
+
+def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
+    """The steady state of every row of ``table``, solved in Rust on all cores.
+
+    ``table`` is a DataFrame or a dict of equal-length arrays with the columns
+
+    - ``youngs_modulus`` E (stress unit, MPa with N and mm), ``poisson_ratio`` nu (0 <= nu < 0.5),
+      ``friction`` f (> 0);
+    - ``profile``: ``"hertz"`` (uses ``radius`` R), ``"flat-rounded"`` (``flat_half_width`` b and
+      the edge ``radius`` R) or ``"power-law"`` (g = B|x|^k: ``coefficient`` B, ``exponent`` k);
+      parameters a row's profile does not use must be NaN, or the column absent;
+    - ``normal1, shear1, bulk1, normal2, shear2, bulk2``: P (> 0) and Q per unit thickness
+      (N/mm) and the bulk tension sigma (MPa) at the cycle's two ends, in either order.
+
+    Signs as in the case files: P > 0 compresses; Q and sigma positive as in the paper's Figure 1;
+    x positive in the direction of positive Q.
+
+    Returns one row per input row, in order (a DataFrame keeps its index), with the columns
+    ``regime, stick_left, stick_right, half_width_1, half_width_2, slip_left_1, slip_left_2,
+    slip_right_1, slip_right_2, error``: the regime (``"partial-slip"``, ``"full-stick"``,
+    ``"gross-sliding"``), the stick zone [-m, n] (NaN when sliding), the contact half-widths at the
+    two points as given, and the slip-zone lengths at the left and right edges at each point (0 in
+    full stick, NaN when sliding). Each row is exactly :func:`halfplane.steady` of the same case.
+    A row whose analysis fails (an invalid value, a cycle outside the analysis) has NaN numbers, an
+    empty regime and its message in ``error`` (``""`` otherwise); it never stops the batch.
+
+    ``threads`` sizes the worker pool (default: the environment variable
+    ``HALFPLANE_NUM_THREADS``, else every core); results do not depend on it. The GIL is released
+    while solving, and Ctrl-C interrupts the call (between chunks of 16,384 rows).
+
+    Raises ValueError (:class:`halfplane.InputError`) naming a missing required column or a column
+    of the wrong type (text where numbers belong, numbers in ``profile``), or columns of unequal
+    length.
+    """
+    if not isinstance(table, (pd.DataFrame, Mapping)):
+        raise TypeError(
+            f"table must be a pandas DataFrame or a dict of columns, not {type(table).__name__}"
+        )
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1):
+        raise _bad(f"invalid threads = {threads!r}: must be a whole number from 1 to 4096, or None")
+    profile = _get(table, "profile")
+    if profile is None:
+        raise _bad("missing column 'profile': give 'hertz', 'flat-rounded' or 'power-law' per row")
+    codes, names = _profiles(profile)
+    rows = len(codes)
+    columns: List[Optional[np.ndarray]] = []
+    for name in _NUMERIC:
+        values = _get(table, name)
+        if values is None:
+            if name in _OPTIONAL:
+                columns.append(None)
+                continue
+            raise _bad(f"missing column {name!r}")
+        column = _numbers(name, values)
+        if len(column) != rows:
+            raise _bad(f"column {name!r} has {len(column)} rows, but 'profile' has {rows}")
+        columns.append(column)
+    regime_codes, numbers, failed = _halfplane.steady_batch_columns(
+        columns, codes, names, None if threads is None else int(threads)
+    )
+    regime = _REGIMES[regime_codes]
+    error = np.full(rows, "", dtype=object)
+    for row, message in failed:
+        error[row] = message
+    index: pd.Index = table.index if isinstance(table, pd.DataFrame) else pd.RangeIndex(rows)
+    # Text columns are object arrays of shared str objects: building pandas' string dtype from a
+    # million of them would cost more than solving the rows.
+    data: Dict[str, Any] = {"regime": pd.Series(regime, index=index, dtype=object, copy=False)}
+    for name, values in zip(STEADY_COLUMNS[1:-1], numbers):
+        data[name] = pd.Series(values, index=index, copy=False)
+    data["error"] = pd.Series(error, index=index, dtype=object, copy=False)
+    return pd.DataFrame(data, index=index, copy=False)

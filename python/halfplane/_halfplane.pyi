@@ -1,0 +1,91 @@
+"""Type stubs of the native module (crates/halfplane-py); use the :mod:`halfplane` package."""
+
+from os import PathLike
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+from typing_extensions import final
+
+__all__ = [
+    "Case",
+    "REGIMES",
+    "STEADY_COLUMNS",
+    "STEADY_INPUT_COLUMNS",
+    "THREADS_VARIABLE",
+    "__version__",
+    "_case_from_state",
+    "evolve_csv",
+    "march_report",
+    "read_case",
+    "steady_batch_columns",
+    "steady_json",
+]
+
+REGIMES: List[str]
+STEADY_COLUMNS: List[str]
+STEADY_INPUT_COLUMNS: List[str]
+THREADS_VARIABLE: str
+__version__: str
+
+_Point = Union[Tuple[float, float], Tuple[float, float, float], Sequence[float], Mapping[str, float]]
+
+@final
+class Case:
+    def __new__(
+        cls,
+        *,
+        youngs_modulus: float,
+        poisson_ratio: float,
+        friction: float,
+        profile: str,
+        radius: Optional[float] = None,
+        flat_half_width: Optional[float] = None,
+        coefficient: Optional[float] = None,
+        exponent: Optional[float] = None,
+        table: Optional[Tuple[Sequence[float], Sequence[float]]] = None,
+        kinks: Optional[Sequence[float]] = None,
+        point1: Optional[_Point] = None,
+        point2: Optional[_Point] = None,
+        history: Union[None, Mapping[str, Any], Sequence[Sequence[float]], npt.ArrayLike] = None,
+        cells: Optional[int] = None,
+        slip_tolerance: Optional[float] = None,
+        units: Optional[Mapping[str, str]] = None,
+    ) -> Case: ...
+    @staticmethod
+    def from_toml(text: str, base_dir: Union[None, str, PathLike[str]] = None) -> Case: ...
+    def to_toml(self) -> str: ...
+    @property
+    def tables(self) -> Dict[str, str]: ...
+    @property
+    def profile(self) -> str: ...
+    @property
+    def youngs_modulus(self) -> float: ...
+    @property
+    def poisson_ratio(self) -> float: ...
+    @property
+    def friction(self) -> float: ...
+    @property
+    def compliance(self) -> float: ...
+    @property
+    def point1(self) -> Optional[Tuple[float, float, float]]: ...
+    @property
+    def point2(self) -> Optional[Tuple[float, float, float]]: ...
+    @property
+    def increments(self) -> Optional[int]: ...
+    @property
+    def cells(self) -> int: ...
+    def __eq__(self, value: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, Dict[str, str]]]: ...
+
+def read_case(path: Union[str, PathLike[str]]) -> Case: ...
+def _case_from_state(text: str, files: Mapping[str, str]) -> Case: ...
+def steady_json(case: Case) -> Tuple[str, Optional[str]]: ...
+def evolve_csv(case: Case, points: int) -> Tuple[str, str, List[str]]: ...
+def march_report(case: Case, cells: Optional[int] = None, fields: bool = False) -> Dict[str, Any]: ...
+def steady_batch_columns(
+    columns: Sequence[Optional[npt.NDArray[np.float64]]],
+    profile_index: npt.NDArray[np.int64],
+    profile_names: Sequence[str],
+    threads: Optional[int] = None,
+) -> Tuple[npt.NDArray[np.int8], List[npt.NDArray[np.float64]], List[Tuple[int, str]]]: ...

@@ -1,0 +1,139 @@
+"""Cases: keyword constructors, TOML text, files; pickling; reprs; errors naming the field."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+
+import halfplane
+from conftest import ROOT
+
+REFERENCE = dict(
+    youngs_modulus=200_000.0,
+    poisson_ratio=0.3,
+    friction=0.6,
+    profile="hertz",
+    radius=50.0,
+    point1=(1000.0, -250.0, -20.0),
+    point2=(1400.0, 250.0, 20.0),
+)
+
+
+def test_keywords_text_and_file_give_the_same_case():
+    from_file = halfplane.read_case(ROOT / "examples" / "hertz.toml")
+    from_keywords = halfplane.Case(**REFERENCE)
+    from_text = halfplane.Case.from_toml(from_keywords.to_toml())
+    assert from_file == from_keywords == from_text
+    assert halfplane.steady(from_file) == halfplane.steady(from_keywords)
+    assert from_keywords.point1 == (1000.0, -250.0, -20.0)
+    assert from_keywords.compliance == pytest.approx(4 * (1 - 0.09) / 2e5, rel=1e-15)
+
+
+def test_cases_with_tables_and_histories_pickle_without_their_files(tmp_path):
+    cases = [
+        halfplane.read_case(path)
+        for path in sorted((ROOT / "examples").glob("*.toml"))
+    ]
+    x = np.linspace(0.0, 2.0, 41)
+    cases.append(
+        halfplane.Case(
+            youngs_modulus=2e5, poisson_ratio=0.3, friction=0.6, profile="tabulated",
+            table=(x, x**2 / 100.0), kinks=[1.0],
+            point1=(1000.0, -250.0), point2=(1400.0, 250.0),
+            history={"kind": "cycle", "cycles": 2, "steps_per_half": 10, "ramp_steps": 5},
+            cells=64,
+        )
+    )
+    cases.append(
+        halfplane.Case(
+            youngs_modulus=2e5, poisson_ratio=0.3, friction=0.6, profile="flat-rounded",
+            radius=50.0, flat_half_width=0.3,
+            history=[[1000.0, 0.0, 0.0], [1000.0, 200.0, 0.0], [1000.0, -100.0, 0.0]],
+            units={"force": "kN", "length": "m", "stress": "GPa"},
+        )
+    )
+    for case in cases:
+        copy = pickle.loads(pickle.dumps(case))
+        assert copy == case, repr(case)
+        assert repr(copy) == repr(case)
+        if case.increments:
+            a, b = halfplane.march(case), halfplane.march(copy)
+            assert a.steps.equals(b.steps)
+
+
+def test_results_pickle():
+    case = halfplane.Case(**REFERENCE)
+    steady = halfplane.steady(case)
+    assert pickle.loads(pickle.dumps(steady)) == steady
+    marched = halfplane.march(halfplane.read_case(ROOT / "examples" / "march-history.toml"), fields=True)
+    copy = pickle.loads(pickle.dumps(marched))
+    assert copy.steps.equals(marched.steps) and np.array_equal(copy.slip, marched.slip)
+    assert repr(copy) == repr(marched)
+
+
+def test_reprs_are_readable():
+    case = halfplane.Case(**REFERENCE)
+    assert repr(case) == (
+        'Case(profile="hertz", radius=50.0, youngs_modulus=200000.0, poisson_ratio=0.3, '
+        "friction=0.6, point1=(1000.0, -250.0, -20.0), point2=(1400.0, 250.0, 20.0))"
+    )
+    text = repr(halfplane.steady(case))
+    assert text.startswith("SteadyResult(regime='partial-slip'") and "stick_zone=[-0.666066, 0.681233]" in text
+    assert "increments" in repr(halfplane.march(halfplane.read_case(ROOT / "examples" / "march-cycle.toml")))
+
+
+def test_result_attributes_mirror_the_json():
+    result = halfplane.steady(halfplane.Case(**REFERENCE))
+    d = result.to_dict()
+    assert result.stick_zone.left == d["stick_zone"]["left"]
+    assert result.slip_zones.right.at_point2 == d["slip_zones"]["right"]["at_point2"]
+    assert result.asymptotic.edges.at_point1.shear_intensity_left == d["asymptotic"]["edges"]["at_point1"]["shear_intensity_left"]
+    assert result.units.length == "mm"
+    with pytest.raises(AttributeError, match="no field"):
+        result.stick
+    with pytest.raises(AttributeError):
+        result.regime = "x"
+
+
+@pytest.mark.parametrize(
+    "change, field",
+    [
+        (dict(youngs_modulus=-1.0), "material.youngs_modulus"),
+        (dict(poisson_ratio=0.5), "material.poisson_ratio"),
+        (dict(friction=0.0), "friction.coefficient"),
+        (dict(radius=None), "profile.radius"),
+        (dict(exponent=2.0), "profile.exponent"),
+        (dict(profile="cylinder"), "profile.kind"),
+        (dict(point1=(-5.0, 0.0)), "cycle.point1.normal"),
+        (dict(history={"kind": "cycle", "cycles": 0, "steps_per_half": 5}), "history.cycles"),
+        (dict(cells=3, history={"kind": "cycle", "cycles": 1, "steps_per_half": 5}), "solver.cells"),
+        (dict(history=[[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]), "normal"),
+    ],
+)
+def test_bad_input_is_a_value_error_naming_the_field(change, field):
+    with pytest.raises(ValueError) as raised:
+        halfplane.Case(**{**REFERENCE, **change})
+    assert field in str(raised.value)
+    assert isinstance(raised.value, halfplane.InputError)
+    assert "/tmp" not in str(raised.value), "temporary paths stay hidden"
+
+
+def test_outside_the_analysis_and_missing_sections():
+    # A tension range that reverses slip at an edge at the start of half 2 (docs/validity.md:
+    # dQ - pi a_max |dsigma|/4 > f |dP| fails).
+    reversing = halfplane.Case(**{**REFERENCE, "point1": (1000.0, -250.0, -200.0), "point2": (1400.0, 250.0, 200.0)})
+    with pytest.raises(halfplane.OutsideAnalysisError) as raised:
+        halfplane.steady(reversing)
+    assert raised.value.variant == "SlipReversesInHalf" and isinstance(raised.value, ValueError)
+    assert "halfplane.march" in str(raised.value)
+    no_cycle = halfplane.Case(**{**REFERENCE, "point1": None, "point2": None})
+    with pytest.raises(halfplane.InputError, match=r"missing section \[cycle\]"):
+        halfplane.steady(no_cycle)
+    with pytest.raises(halfplane.InputError, match=r"missing section \[history\]"):
+        halfplane.march(no_cycle)
+    with pytest.raises(halfplane.InputError, match="points"):
+        halfplane.evolve(halfplane.Case(**REFERENCE), points=1)
+    with pytest.raises(FileNotFoundError):
+        halfplane.read_case(ROOT / "examples" / "no-such-case.toml")
