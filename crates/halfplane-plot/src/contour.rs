@@ -57,47 +57,51 @@ pub fn levels(lo: f64, hi: f64, most: usize) -> (Vec<f64>, usize) {
     (levels, decimals)
 }
 
-/// The iso-line `value = level` as disjoint segments (consecutive pairs of points), in plot
-/// coordinates `(x, -z)` so that depth runs downwards. Cells with a value that is not finite are
-/// skipped; a saddle cell is resolved by the mean of its corners.
-pub fn segments(map: &GridMap, level: f64) -> Vec<(f64, f64)> {
-    let (nx, nz) = (map.x.len(), map.z.len());
+/// The segments where the field `value(ix, iy)` on the grid `xs` × `ys` crosses `level`, as
+/// pairs of points. Cells with a missing corner are skipped.
+pub fn contour_segments(
+    xs: &[f64],
+    ys: &[f64],
+    value: impl Fn(usize, usize) -> Option<f64>,
+    level: f64,
+) -> Vec<((f64, f64), (f64, f64))> {
     let mut out = Vec::new();
-    if !map.is_consistent() {
-        return out;
-    }
-    let at = |i: usize, j: usize| map.values[j * nx + i];
-    for j in 0..nz - 1 {
-        for i in 0..nx - 1 {
-            // Corners counter-clockwise from (i, j): (i, j), (i+1, j), (i+1, j+1), (i, j+1).
-            let corner = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)];
-            let v = corner.map(|(a, b)| at(a, b));
-            if v.iter().any(|v| !v.is_finite()) {
+    for iy in 0..ys.len().saturating_sub(1) {
+        for ix in 0..xs.len().saturating_sub(1) {
+            // Corners counter-clockwise from (ix, iy).
+            let at = [(ix, iy), (ix + 1, iy), (ix + 1, iy + 1), (ix, iy + 1)];
+            let Some(v) = at
+                .iter()
+                .map(|&(i, j)| value(i, j))
+                .collect::<Option<Vec<f64>>>()
+            else {
                 continue;
-            }
-            let above = v.map(|v| v >= level);
-            // Edge k joins corner k and corner k + 1.
+            };
+            let p: Vec<(f64, f64)> = at.iter().map(|&(i, j)| (xs[i], ys[j])).collect();
+            // The crossing on edge k (from corner k to k + 1), if the level separates its ends.
             let cross = |k: usize| -> Option<(f64, f64)> {
-                let l = (k + 1) % 4;
-                if above[k] == above[l] {
+                let (a, b) = (v[k], v[(k + 1) % 4]);
+                if (a < level) == (b < level) {
                     return None;
                 }
-                let t = (level - v[k]) / (v[l] - v[k]);
-                let (a, b) = (corner[k], corner[l]);
-                let x = map.x[a.0] + t * (map.x[b.0] - map.x[a.0]);
-                let z = map.z[a.1] + t * (map.z[b.1] - map.z[a.1]);
-                Some((x, -z))
+                let t = (level - a) / (b - a);
+                let (pa, pb) = (p[k], p[(k + 1) % 4]);
+                Some((pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1)))
             };
-            let points: Vec<(usize, (f64, f64))> =
-                (0..4).filter_map(|k| cross(k).map(|p| (k, p))).collect();
-            match points.len() {
-                2 => out.extend([points[0].1, points[1].1]),
+            let crossings: Vec<(usize, (f64, f64))> =
+                (0..4).filter_map(|k| cross(k).map(|c| (k, c))).collect();
+            match crossings.len() {
+                2 => out.push((crossings[0].1, crossings[1].1)),
                 4 => {
-                    // A saddle: cut off the two corners on the other side from the centre. The
-                    // corner k lies between edges k - 1 and k.
-                    let centre = 0.25 * v.iter().sum::<f64>() >= level;
-                    for k in (0..4).filter(|&k| above[k] != centre) {
-                        out.extend([points[(k + 3) % 4].1, points[k].1]);
+                    // A saddle: the centre value decides which corners the level joins.
+                    let centre = 0.25 * v.iter().sum::<f64>();
+                    let c: Vec<(f64, f64)> = crossings.iter().map(|c| c.1).collect();
+                    if (centre < level) == (v[0] < level) {
+                        out.push((c[0], c[1]));
+                        out.push((c[2], c[3]));
+                    } else {
+                        out.push((c[3], c[0]));
+                        out.push((c[1], c[2]));
                     }
                 }
                 _ => {}
@@ -107,9 +111,43 @@ pub fn segments(map: &GridMap, level: f64) -> Vec<(f64, f64)> {
     out
 }
 
+/// The iso-line `value = level` of a field below the surface as disjoint segments (consecutive
+/// pairs of points), in plot coordinates `(x, -z)` so that depth runs downwards. Cells with a
+/// value that is not finite are skipped.
+pub fn segments(map: &GridMap, level: f64) -> Vec<(f64, f64)> {
+    if !map.is_consistent() {
+        return Vec::new();
+    }
+    let nx = map.x.len();
+    let value = |i: usize, j: usize| Some(map.values[j * nx + i]).filter(|v| v.is_finite());
+    contour_segments(map.x, map.z, value, level)
+        .into_iter()
+        .flat_map(|((x0, z0), (x1, z1))| [(x0, -z0), (x1, -z1)])
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn contours_of_a_plane_lie_on_its_level_line() {
+        // v = x + 2y on a 5 x 4 grid: marching squares with linear interpolation is exact for a
+        // linear field, so every segment end lies on x + 2y = level to rounding (1e-12).
+        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let ys = [0.0, 0.5, 1.5, 3.0];
+        let value = |i: usize, j: usize| Some(xs[i] + 2.0 * ys[j]);
+        let segments = contour_segments(&xs, &ys, value, 3.3);
+        assert!(!segments.is_empty());
+        for (a, b) in segments {
+            for p in [a, b] {
+                assert!(
+                    (p.0 + 2.0 * p.1 - 3.3).abs() < 1e-12,
+                    "{p:?} off the level line"
+                );
+            }
+        }
+    }
 
     #[test]
     fn levels_are_round_and_inside_the_range() {

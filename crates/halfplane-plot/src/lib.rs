@@ -15,12 +15,12 @@ mod fields;
 mod matching;
 mod render;
 
-pub use contour::GridMap;
+pub use contour::{contour_segments, levels, GridMap};
 pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
 pub use matching::match_figure;
 mod map;
 
-pub use map::{contour_segments, design_map_figure, levels, sequential, DesignMap, MapColor};
+pub use map::{design_map_figure, sequential, DesignMap, MapColor};
 
 pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
 

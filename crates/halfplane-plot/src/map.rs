@@ -8,6 +8,7 @@
 //! form; a saddle cell is split by its centre value, the mean of its corners). Scattered rows (a
 //! random or Latin-hypercube sweep) are drawn as small squares, without contours.
 
+use crate::contour::{contour_segments, levels};
 use crate::{Figure, Legend, Panel, PlotError, Series, Style};
 
 /// The colour of each row: a category (a regime name) or a number (absent where the row has no
@@ -67,27 +68,6 @@ pub fn sequential(t: f64) -> (u8, u8, u8) {
     (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
-/// Contour levels strictly inside `(lo, hi)`: multiples of a 1, 2 or 5 step chosen for about
-/// `target` bands.
-pub fn levels(lo: f64, hi: f64, target: usize) -> Vec<f64> {
-    if hi <= lo || !lo.is_finite() || !hi.is_finite() {
-        return Vec::new();
-    }
-    let raw = (hi - lo) / target.max(1) as f64;
-    let magnitude = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0]
-        .iter()
-        .map(|m| m * magnitude)
-        .find(|&s| s >= raw)
-        .unwrap_or(10.0 * magnitude);
-    let first = (lo / step).floor() as i64 + 1;
-    (first..)
-        .map(|k| k as f64 * step)
-        .take_while(|&v| v < hi)
-        .filter(|&v| v > lo)
-        .collect()
-}
-
 /// The sorted distinct values of `v`.
 fn distinct(v: impl Iterator<Item = f64>) -> Vec<f64> {
     let mut d: Vec<f64> = v.collect();
@@ -135,60 +115,6 @@ fn grid(points: &[(f64, f64)]) -> Option<Grid> {
         *slot = i;
     }
     Some(Grid { xs, ys, row })
-}
-
-/// The segments where the field `value(ix, iy)` on the grid `xs` × `ys` crosses `level`, as
-/// pairs of points. Cells with a missing corner are skipped.
-pub fn contour_segments(
-    xs: &[f64],
-    ys: &[f64],
-    value: impl Fn(usize, usize) -> Option<f64>,
-    level: f64,
-) -> Vec<((f64, f64), (f64, f64))> {
-    let mut out = Vec::new();
-    for iy in 0..ys.len().saturating_sub(1) {
-        for ix in 0..xs.len().saturating_sub(1) {
-            // Corners counter-clockwise from (ix, iy).
-            let at = [(ix, iy), (ix + 1, iy), (ix + 1, iy + 1), (ix, iy + 1)];
-            let Some(v) = at
-                .iter()
-                .map(|&(i, j)| value(i, j))
-                .collect::<Option<Vec<f64>>>()
-            else {
-                continue;
-            };
-            let p: Vec<(f64, f64)> = at.iter().map(|&(i, j)| (xs[i], ys[j])).collect();
-            // The crossing on edge k (from corner k to k + 1), if the level separates its ends.
-            let cross = |k: usize| -> Option<(f64, f64)> {
-                let (a, b) = (v[k], v[(k + 1) % 4]);
-                if (a < level) == (b < level) {
-                    return None;
-                }
-                let t = (level - a) / (b - a);
-                let (pa, pb) = (p[k], p[(k + 1) % 4]);
-                Some((pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1)))
-            };
-            let crossings: Vec<(usize, (f64, f64))> =
-                (0..4).filter_map(|k| cross(k).map(|c| (k, c))).collect();
-            match crossings.len() {
-                2 => out.push((crossings[0].1, crossings[1].1)),
-                4 => {
-                    // A saddle: the centre value decides which corners the level joins.
-                    let centre = 0.25 * v.iter().sum::<f64>();
-                    let c: Vec<(f64, f64)> = crossings.iter().map(|c| c.1).collect();
-                    if (centre < level) == (v[0] < level) {
-                        out.push((c[0], c[1]));
-                        out.push((c[2], c[3]));
-                    } else {
-                        out.push((c[3], c[0]));
-                        out.push((c[1], c[2]));
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-    out
 }
 
 /// The cell rectangle (opposite corners) of each row, and whether the rows form a grid.
@@ -315,7 +241,7 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
             let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
                 (a.min(v), b.max(v))
             });
-            let levels = levels(lo, hi, 8);
+            let (levels, _) = levels(lo, hi, 8);
             let bounds: Vec<f64> = if lo.is_finite() {
                 std::iter::once(lo)
                     .chain(levels.iter().copied())
@@ -394,33 +320,6 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn contours_of_a_plane_lie_on_its_level_line() {
-        // v = x + 2y on a 5 x 4 grid: marching squares with linear interpolation is exact for a
-        // linear field, so every segment end lies on x + 2y = level to rounding (1e-12).
-        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
-        let ys = [0.0, 0.5, 1.5, 3.0];
-        let value = |i: usize, j: usize| Some(xs[i] + 2.0 * ys[j]);
-        let segments = contour_segments(&xs, &ys, value, 3.3);
-        assert!(!segments.is_empty());
-        for (a, b) in segments {
-            for p in [a, b] {
-                assert!(
-                    (p.0 + 2.0 * p.1 - 3.3).abs() < 1e-12,
-                    "{p:?} off the level line"
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn levels_are_round_and_inside() {
-        assert_eq!(levels(0.0, 1.0, 5), vec![0.2, 0.4, 0.6000000000000001, 0.8]);
-        assert!(levels(1.0, 1.0, 5).is_empty());
-        let l = levels(0.013, 0.871, 8);
-        assert!(l.iter().all(|&v| v > 0.013 && v < 0.871) && l.len() >= 4);
-    }
 
     #[test]
     fn a_grid_gets_cells_and_a_regime_map_one_series_per_regime() {
