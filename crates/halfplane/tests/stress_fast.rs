@@ -209,11 +209,10 @@ fn fast_field_accepts_surface_points_on_every_node_of_a_continuous_traction() {
     let fast = stress::field(&t, 0.0, &m, &x, &z).expect("fast route: finite on every node");
     let direct = stress::field_direct(&t, 0.0, &m, &x, &z).expect("direct: finite on every node");
     let peak = direct.sxx.iter().fold(0.0f64, |a, b| a.max(b.abs()));
-    for i in 0..x.len() {
+    for (i, xi) in x.iter().enumerate() {
         assert!(
             (fast.sxx[i] - direct.sxx[i]).abs() < 1e-11 * peak,
-            "surface sxx on node {i} (x = {}): fast {} vs direct {}",
-            x[i],
+            "surface sxx on node {i} (x = {xi}): fast {} vs direct {}",
             fast.sxx[i],
             direct.sxx[i]
         );
