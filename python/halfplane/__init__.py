@@ -6,6 +6,9 @@ The same analyses as the ``halfplane`` command, with the same numbers:
 - :func:`read_case`, :meth:`Case.from_toml` and the keyword constructor :class:`Case` build cases;
 - :func:`steady` (``halfplane steady --json`` as a :class:`SteadyResult`), :func:`evolve`
   (``evolve --csv`` as a DataFrame), :func:`march` (``march``: steps, cycles, fields);
+- :func:`stress` (``stress``: the stresses below the contact at an increment) and :func:`fatigue`
+  (``fatigue``: initiation parameters over the steady cycle); :func:`match` (``match``: the
+  test that reproduces a prototype's contact-edge state);
 - :func:`steady_batch`: a million cases in one call on every core; :mod:`halfplane.dask` on a
   cluster.
 
@@ -30,7 +33,9 @@ import pandas as pd
 from . import _halfplane
 from ._batch import STEADY_COLUMNS, steady_batch
 from ._halfplane import Case, read_case
+from ._matching import MatchResult, match
 from ._results import MarchResult, Record, SteadyResult
+from ._subsurface import FatigueResult, StressResult, fatigue, stress
 from .errors import (
     HalfplaneError,
     HalfplaneWarning,
@@ -132,19 +137,25 @@ def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> Marc
 
 __all__ = [
     "Case",
+    "FatigueResult",
     "HalfplaneError",
     "HalfplaneWarning",
     "InputError",
     "MarchResult",
+    "MatchResult",
     "OutsideAnalysisError",
     "Record",
     "STEADY_COLUMNS",
     "STEADY_INPUT_COLUMNS",
     "SolverError",
     "SteadyResult",
+    "StressResult",
     "evolve",
+    "fatigue",
     "march",
+    "match",
     "read_case",
     "steady",
     "steady_batch",
+    "stress",
 ]

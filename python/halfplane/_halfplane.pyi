@@ -16,10 +16,13 @@ __all__ = [
     "__version__",
     "_case_from_state",
     "evolve_csv",
+    "fatigue_report",
     "march_report",
+    "match_report",
     "read_case",
     "steady_batch_columns",
     "steady_json",
+    "stress_points",
 ]
 
 REGIMES: List[str]
@@ -89,3 +92,23 @@ def steady_batch_columns(
     profile_names: Sequence[str],
     threads: Optional[int] = None,
 ) -> Tuple[npt.NDArray[np.int8], List[npt.NDArray[np.float64]], List[Tuple[int, str]]]: ...
+def stress_points(
+    case: Case,
+    x: npt.NDArray[np.float64],
+    z: npt.NDArray[np.float64],
+    step: Optional[int] = None,
+    cells: Optional[int] = None,
+) -> Dict[str, Any]: ...
+def fatigue_report(case: Case, cells: Optional[int] = None) -> Tuple[str, str]: ...
+def match_report(
+    case: Case,
+    profile: str,
+    radius: Optional[float] = None,
+    flat_half_width: Optional[float] = None,
+    coefficient: Optional[float] = None,
+    exponent: Optional[float] = None,
+    youngs_modulus: Optional[float] = None,
+    poisson_ratio: Optional[float] = None,
+    friction: Optional[float] = None,
+    exact: bool = False,
+) -> Tuple[str, Case, str, List[str]]: ...

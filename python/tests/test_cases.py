@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import halfplane
-from conftest import ROOT
+from conftest import EXAMPLES, ROOT
 
 REFERENCE = dict(
     youngs_modulus=200_000.0,
@@ -32,10 +32,7 @@ def test_keywords_text_and_file_give_the_same_case():
 
 
 def test_cases_with_tables_and_histories_pickle_without_their_files(tmp_path):
-    cases = [
-        halfplane.read_case(path)
-        for path in sorted((ROOT / "examples").glob("*.toml"))
-    ]
+    cases = [halfplane.read_case(path) for path in EXAMPLES]
     x = np.linspace(0.0, 2.0, 41)
     cases.append(
         halfplane.Case(

@@ -24,7 +24,7 @@ const HISTORY_FILE: &str = "history.csv";
 #[pyclass(module = "halfplane._halfplane", name = "Case", frozen)]
 pub struct PyCase {
     pub(crate) case: Case,
-    text: String,
+    pub(crate) text: String,
     files: BTreeMap<String, String>,
 }
 
@@ -81,7 +81,7 @@ impl PyCase {
         Ok(Self { case, text, files })
     }
 
-    fn from_text(py: Python<'_>, text: &str, dir: &Path) -> PyResult<Self> {
+    pub(crate) fn from_text(py: Python<'_>, text: &str, dir: &Path) -> PyResult<Self> {
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let case = case::parse(text, dir).map_err(|e| errors::from_anyhow(py, &e, None))?;
         let (text, files) =

@@ -8,6 +8,8 @@ mod analyses;
 mod batch;
 mod case;
 mod errors;
+mod matching;
+mod subsurface;
 
 use pyo3::prelude::*;
 
@@ -21,6 +23,9 @@ fn _halfplane(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analyses::evolve_csv, m)?)?;
     m.add_function(wrap_pyfunction!(analyses::march_report, m)?)?;
     m.add_function(wrap_pyfunction!(batch::steady_batch_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(subsurface::stress_points, m)?)?;
+    m.add_function(wrap_pyfunction!(subsurface::fatigue_report, m)?)?;
+    m.add_function(wrap_pyfunction!(matching::match_report, m)?)?;
     m.add("REGIMES", batch::REGIMES.to_vec())?;
     m.add("STEADY_COLUMNS", halfplane::batch::STEADY_COLUMNS.to_vec())?;
     m.add(

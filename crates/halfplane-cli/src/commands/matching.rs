@@ -36,23 +36,44 @@ impl MatchConfig {
     /// options, the prototype's material and friction where they are not given.
     pub fn resolve(args: &MatchArgs) -> Result<Self> {
         let prototype = crate::case::load(&args.case)?;
-        prototype.cycle()?;
         let text = std::fs::read_to_string(&args.case)
             .with_context(|| format!("cannot read case file {}", args.case.display()))?;
-        let raw: toml::Table = toml::from_str(text.strip_prefix('\u{feff}').unwrap_or(&text))
+        Self::from_case(
+            prototype,
+            &text,
+            args.case.clone(),
+            &args.test,
+            args.output.clone(),
+            args.json,
+        )
+    }
+
+    /// The configuration of a prototype already read: `text` is its case file (its `[history]`,
+    /// `[solver]` and `[units]` are carried over as written), `prototype_path` the name the test
+    /// case's header and the report give it, `output` the test case file to name.
+    pub fn from_case(
+        prototype: Case,
+        text: &str,
+        prototype_path: PathBuf,
+        test: &TestArgs,
+        output: PathBuf,
+        json: bool,
+    ) -> Result<Self> {
+        prototype.cycle()?;
+        let raw: toml::Table = toml::from_str(text.strip_prefix('\u{feff}').unwrap_or(text))
             .map_err(|e| anyhow!("{}", e.to_string().trim_end()))?;
         let carried = raw
             .into_iter()
             .filter(|(k, _)| ["history", "solver", "units"].contains(&k.as_str()))
             .collect();
         Ok(Self {
-            test: test_contact(&args.test, &prototype.contact)?,
+            test: test_contact(test, &prototype.contact)?,
             prototype,
-            prototype_path: args.case.clone(),
+            prototype_path,
             carried,
-            mode: mode(&args.test),
-            output: args.output.clone(),
-            json: args.json,
+            mode: mode(test),
+            output,
+            json,
         })
     }
 }
@@ -146,9 +167,23 @@ fn option_error(e: Error) -> anyhow::Error {
     }
 }
 
-/// Finds the test, writes the test case and prints the report; warnings go to stderr unless
-/// the JSON carries them.
-pub fn run(config: &MatchConfig) -> Result<()> {
+/// What `match` finds: the library's report, the warnings and notes (one line each), the test
+/// case's TOML and, when the prototype's `[history]` is not the in-phase cycle, the mapped history
+/// as `(path, CSV)` that the test case names (beside `output`).
+pub struct Matched {
+    /// The matched test and its comparison with the prototype.
+    pub report: MatchReport,
+    /// Warnings and notes, as the command prints them on stderr.
+    pub notes: Vec<String>,
+    /// The test case file's text.
+    pub test_case: String,
+    /// The mapped `[history]` rows, `normal,shear,bulk`, and the path to write them to.
+    pub history_csv: Option<(PathBuf, String)>,
+}
+
+/// Finds the test and builds the test case, writing nothing: what `halfplane match` writes and
+/// prints, which the Python package returns too.
+pub fn compute(config: &MatchConfig) -> Result<Matched> {
     let cycle = config.prototype.cycle()?;
     let report =
         matching::match_cycle(&config.prototype.contact, &cycle, &config.test, config.mode)?;
@@ -157,18 +192,36 @@ pub fn run(config: &MatchConfig) -> Result<()> {
         .iter()
         .map(|w| format!("warning: {w}"))
         .collect();
-    let history = mapped_history(config, &report, &mut notes)?;
-    let text = test_case(config, &report, history.as_ref())?;
-    std::fs::write(&config.output, text)
+    let (history, history_csv) = match mapped_history(config, &report, &mut notes)? {
+        Some((section, csv)) => (Some(section), csv),
+        None => (None, None),
+    };
+    let test_case = test_case(config, &report, history.as_ref())?;
+    Ok(Matched {
+        report,
+        notes,
+        test_case,
+        history_csv,
+    })
+}
+
+/// Finds the test, writes the test case and prints the report; warnings go to stderr unless
+/// the JSON carries them.
+pub fn run(config: &MatchConfig) -> Result<()> {
+    let matched = compute(config)?;
+    if let Some((path, csv)) = &matched.history_csv {
+        std::fs::write(path, csv).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    std::fs::write(&config.output, &matched.test_case)
         .with_context(|| format!("cannot write {}", config.output.display()))?;
-    let out = MatchReportOut::new(&report, config, &notes);
+    let out = MatchReportOut::new(&matched.report, config, &matched.notes);
     emit(&if config.json {
         out.json()? + "\n"
     } else {
         out.table()
     })?;
     if !config.json {
-        for n in &notes {
+        for n in &matched.notes {
             note(n);
         }
     }
@@ -176,19 +229,23 @@ pub fn run(config: &MatchConfig) -> Result<()> {
     Ok(())
 }
 
+/// The test case's `[history]` section and the CSV it names (path, text), if any.
+type MappedHistory = (toml::Table, Option<(PathBuf, String)>);
+
 /// The test's `[history]`: the prototype's carried over when it is the in-phase cycle (it refers
 /// to `[cycle]`, which now holds the test's points); otherwise every row mapped by the asymptotic
-/// match and written to a CSV beside the test case, returned as `(file name, section)`.
+/// match, as a CSV to write beside the test case: returned as the section naming it and
+/// `(path, CSV)`.
 fn mapped_history(
     config: &MatchConfig,
     report: &MatchReport,
     notes: &mut Vec<String>,
-) -> Result<Option<toml::Table>> {
+) -> Result<Option<MappedHistory>> {
     let Some(toml::Value::Table(section)) = config.carried.get("history") else {
         return Ok(None);
     };
     if section.get("kind").and_then(|k| k.as_str()) == Some("cycle") {
-        return Ok(Some(section.clone()));
+        return Ok(Some((section.clone(), None)));
     }
     let history: History = config.prototype.history()?;
     let rows = matching::map_history(
@@ -214,10 +271,9 @@ fn mapped_history(
     for r in &rows {
         let _ = writeln!(csv, "{:?},{:?},{:?}", r.normal(), r.shear(), r.bulk());
     }
-    std::fs::write(&path, csv).with_context(|| format!("cannot write {}", path.display()))?;
     let mut table = toml::Table::new();
     table.insert("file".into(), toml::Value::String(name));
-    Ok(Some(table))
+    Ok(Some((table, Some((path, csv)))))
 }
 
 /// The test case as TOML: the test's material, friction, profile and cycle, then the carried

@@ -40,11 +40,7 @@ impl StressConfig {
     pub fn resolve(args: &StressArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
         let history = case.history()?;
-        let last = history.loads().len();
-        let step = args.step.unwrap_or(last);
-        if step == 0 || step > last {
-            bail!("invalid --step {step}: the history has increments 1 to {last}");
-        }
+        let step = check_step(args.step, &history, "--step")?;
         let (x, z) = match (&args.at, &args.grid) {
             (Some(path), _) => {
                 let (values, lines) = crate::case::read_csv(path, "--at", &["x", "z"], MAX_POINTS)?;
@@ -129,46 +125,77 @@ pub fn grid(text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     Ok((x, z))
 }
 
-/// Marches to the increment, evaluates the stresses and prints them.
-pub fn run(config: &StressConfig) -> Result<()> {
-    let kept = stress::marched(
-        &config.contact,
-        &config.history,
-        &config.options,
-        &[config.step],
-    )?;
+/// The increment `step` names (1-based; the last when None), checked against the history's
+/// increments; errors name the option or argument `name`.
+pub fn check_step(step: Option<usize>, history: &History, name: &str) -> Result<usize> {
+    let last = history.loads().len();
+    let step = step.unwrap_or(last);
+    if step == 0 || step > last {
+        bail!("invalid {name} {step}: the history has increments 1 to {last}");
+    }
+    Ok(step)
+}
+
+/// Marches `history` to increment `step` (1-based) and evaluates the stresses at the points
+/// `(x[i], z[i])` (z the depth, >= 0): the report `halfplane stress` prints, which the Python
+/// package returns too. The stresses are those of [`stress::field`] (its sign conventions: tension
+/// positive, the bulk tension included in sxx, syy = nu (sxx + szz) in plane strain).
+pub fn report(
+    contact: &Contact,
+    history: &History,
+    options: &MarchOptions,
+    step: usize,
+    x: &[f64],
+    z: &[f64],
+    units: &Units,
+) -> Result<StressReport> {
+    if x.len() != z.len() {
+        bail!(
+            "the points have {} x values but {} z values; give one z per x",
+            x.len(),
+            z.len()
+        );
+    }
+    let kept = stress::marched(contact, history, options, &[step])?;
     let state = kept
         .into_iter()
         .next()
-        .ok_or_else(|| anyhow!("the march did not reach step {}", config.step))?;
+        .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
     let bulk = state.load.bulk();
-    let field = stress::field(
-        &state.traction,
-        bulk,
-        &config.contact.material,
-        &config.x,
-        &config.z,
-    )
-    .context("evaluating the stresses")?;
-    let points = (0..config.x.len())
+    let field = stress::field(&state.traction, bulk, &contact.material, x, z)
+        .context("evaluating the stresses")?;
+    let points = (0..x.len())
         .map(|i| StressRow {
-            x: config.x[i],
-            z: config.z[i],
+            x: x[i],
+            z: z[i],
             sxx: field.sxx[i],
             szz: field.szz[i],
             syy: field.syy[i],
             sxz: field.sxz[i],
         })
         .collect();
-    let report = StressReport {
+    Ok(StressReport {
         step: state.step,
         normal: state.load.normal(),
         shear: state.load.shear(),
         bulk,
         half_width: state.half_width,
         points,
-        units: config.units.clone(),
-    };
+        units: units.clone(),
+    })
+}
+
+/// Marches to the increment, evaluates the stresses and prints them.
+pub fn run(config: &StressConfig) -> Result<()> {
+    let report = report(
+        &config.contact,
+        &config.history,
+        &config.options,
+        config.step,
+        &config.x,
+        &config.z,
+        &config.units,
+    )?;
     emit(&match config.format {
         Format::Table => report.table(),
         Format::Csv => report.csv(),

@@ -1,0 +1,82 @@
+//! `match`: the test that reproduces a prototype's contact-edge state. It runs the CLI's own
+//! [`halfplane_cli::commands::matching::compute`] (the same test contact from the options, the
+//! same report and test case text), writing no file.
+
+use crate::case::PyCase;
+use crate::errors;
+use halfplane_cli::args::{TestArgs, TestProfile};
+use halfplane_cli::commands::matching::{compute, MatchConfig};
+use halfplane_cli::report::matching::MatchReportOut;
+use pyo3::prelude::*;
+use std::path::PathBuf;
+
+/// The name the report and the test case's header give a prototype from Python.
+const PROTOTYPE_NAME: &str = "<prototype>";
+/// The test case's file name: the mapped history's table is named after it.
+const TEST_NAME: &str = "test.toml";
+
+/// `halfplane match CASE -o test.toml --json` with the test options: the report's JSON, the test
+/// case (read back from the text `match` writes) and the warnings and notes.
+#[pyfunction]
+#[pyo3(signature = (case, profile, radius=None, flat_half_width=None, coefficient=None,
+    exponent=None, youngs_modulus=None, poisson_ratio=None, friction=None, exact=false))]
+#[allow(clippy::too_many_arguments)]
+pub fn match_report(
+    py: Python<'_>,
+    case: &PyCase,
+    profile: &str,
+    radius: Option<f64>,
+    flat_half_width: Option<f64>,
+    coefficient: Option<f64>,
+    exponent: Option<f64>,
+    youngs_modulus: Option<f64>,
+    poisson_ratio: Option<f64>,
+    friction: Option<f64>,
+    exact: bool,
+) -> PyResult<(String, PyCase, String, Vec<String>)> {
+    let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
+    let profile = match profile {
+        "hertz" => TestProfile::Hertz,
+        "flat-rounded" => TestProfile::FlatRounded,
+        "power-law" => TestProfile::PowerLaw,
+        other => {
+            return Err(input(anyhow::anyhow!(
+            "invalid profile = \"{other}\": must be \"hertz\", \"flat-rounded\" or \"power-law\""
+        )))
+        }
+    };
+    let test = TestArgs {
+        profile,
+        radius,
+        flat_half_width,
+        coefficient,
+        exponent,
+        youngs_modulus,
+        poisson_ratio,
+        friction,
+        exact,
+    };
+    let config = MatchConfig::from_case(
+        case.case.clone(),
+        &case.text,
+        PathBuf::from(PROTOTYPE_NAME),
+        &test,
+        PathBuf::from(TEST_NAME),
+        true,
+    )
+    .map_err(input)?;
+    let matched = py.detach(|| compute(&config)).map_err(input)?;
+    let json = MatchReportOut::new(&matched.report, &config, &matched.notes)
+        .json()
+        .map_err(|e| input(e.into()))?;
+    let dir = tempfile::tempdir().map_err(|e| {
+        pyo3::exceptions::PyOSError::new_err(format!("cannot create a temporary directory: {e}"))
+    })?;
+    if let Some((path, csv)) = &matched.history_csv {
+        std::fs::write(dir.path().join(path), csv).map_err(|e| {
+            pyo3::exceptions::PyOSError::new_err(format!("cannot write a temporary table: {e}"))
+        })?;
+    }
+    let test_case = PyCase::from_text(py, &matched.test_case, dir.path())?;
+    Ok((json, test_case, matched.test_case, matched.notes))
+}
