@@ -10,24 +10,11 @@ import pandas as pd
 from . import _halfplane
 from .errors import InputError
 
-#: The numeric input columns, in the order the native solver takes them.
-_NUMERIC = [
-    "youngs_modulus",
-    "poisson_ratio",
-    "friction",
-    "radius",
-    "flat_half_width",
-    "coefficient",
-    "exponent",
-    "normal1",
-    "shear1",
-    "bulk1",
-    "normal2",
-    "shear2",
-    "bulk2",
-]
+#: The numeric input columns, in the order the native solver takes them: the documented input
+#: columns without ``profile`` (passed as codes).
+_NUMERIC = [c for c in _halfplane.STEADY_INPUT_COLUMNS if c != "profile"]
 #: Profile parameters: a column no row uses may be absent.
-_OPTIONAL = {"radius", "flat_half_width", "coefficient", "exponent"}
+_OPTIONAL = set(_halfplane.SHAPE_COLUMNS)
 
 #: Output columns, in order (``regime`` first, ``error`` last).
 STEADY_COLUMNS: List[str] = list(_halfplane.STEADY_COLUMNS)

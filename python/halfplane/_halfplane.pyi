@@ -28,6 +28,7 @@ __all__ = [
 REGIMES: List[str]
 STEADY_COLUMNS: List[str]
 STEADY_INPUT_COLUMNS: List[str]
+SHAPE_COLUMNS: List[str]
 THREADS_VARIABLE: str
 __version__: str
 

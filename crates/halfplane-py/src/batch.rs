@@ -3,7 +3,7 @@
 //! back just long enough to see Ctrl-C.
 
 use crate::errors;
-use halfplane::batch::{Batch, ProfileKind, SteadyRow, SteadySummary};
+use halfplane::batch::{Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_INPUT_COLUMNS};
 use halfplane::{Error, Regime, SteadyOptions};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
@@ -21,22 +21,14 @@ fn code(regime: Regime) -> i8 {
     }
 }
 
-/// The numeric input columns, in the order [`steady_batch_columns`] takes them.
-const NUMERIC: [&str; 13] = [
-    "youngs_modulus",
-    "poisson_ratio",
-    "friction",
-    "radius",
-    "flat_half_width",
-    "coefficient",
-    "exponent",
-    "normal1",
-    "shear1",
-    "bulk1",
-    "normal2",
-    "shear2",
-    "bulk2",
-];
+/// The numeric input columns, in the order [`steady_batch_columns`] takes them: the library's
+/// documented input columns without `profile` (passed as codes).
+fn numeric_columns() -> impl Iterator<Item = &'static str> {
+    STEADY_INPUT_COLUMNS.into_iter().filter(|c| *c != "profile")
+}
+
+/// How many numeric input columns there are.
+const NUMERIC_COUNT: usize = STEADY_INPUT_COLUMNS.len() - 1;
 
 /// Regime codes, the eight numbers of `STEADY_COLUMNS`, and (row, message) of failed rows.
 type Output<'py> = (
@@ -45,7 +37,7 @@ type Output<'py> = (
     Vec<(usize, String)>,
 );
 
-/// Solves the rows of the columns (in the order of `NUMERIC`; `None` for an absent profile
+/// Solves the rows of the columns (in the order of `numeric_columns`; `None` for an absent profile
 /// parameter) with profile `profile_names[profile_index[i]]` (-1: missing), on `threads` workers.
 #[pyfunction]
 #[pyo3(signature = (columns, profile_index, profile_names, threads=None))]
@@ -60,15 +52,14 @@ pub fn steady_batch_columns<'py>(
         .as_slice()
         .map_err(|e| PyValueError::new_err(format!("profile codes: {e}")))?;
     let rows = index.len();
-    if columns.len() != NUMERIC.len() {
+    if columns.len() != NUMERIC_COUNT {
         return Err(PyValueError::new_err(format!(
-            "expected {} numeric columns, found {}",
-            NUMERIC.len(),
+            "expected {NUMERIC_COUNT} numeric columns, found {}",
             columns.len()
         )));
     }
-    let mut slices: Vec<Option<&[f64]>> = Vec::with_capacity(NUMERIC.len());
-    for (name, column) in NUMERIC.iter().zip(&columns) {
+    let mut slices: Vec<Option<&[f64]>> = Vec::with_capacity(NUMERIC_COUNT);
+    for (name, column) in numeric_columns().zip(&columns) {
         let slice = match column {
             Some(c) => {
                 let s = c

@@ -32,6 +32,10 @@ fn _halfplane(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "STEADY_INPUT_COLUMNS",
         halfplane::batch::STEADY_INPUT_COLUMNS.to_vec(),
     )?;
+    m.add(
+        "SHAPE_COLUMNS",
+        halfplane::batch::row::SHAPE_COLUMNS.to_vec(),
+    )?;
     m.add("THREADS_VARIABLE", halfplane::batch::THREADS_VARIABLE)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
