@@ -10,6 +10,7 @@ from typing_extensions import final
 __all__ = [
     "Case",
     "REGIMES",
+    "SHAPE_COLUMNS",
     "STEADY_COLUMNS",
     "STEADY_INPUT_COLUMNS",
     "THREADS_VARIABLE",
@@ -26,9 +27,9 @@ __all__ = [
 ]
 
 REGIMES: List[str]
+SHAPE_COLUMNS: List[str]
 STEADY_COLUMNS: List[str]
 STEADY_INPUT_COLUMNS: List[str]
-SHAPE_COLUMNS: List[str]
 THREADS_VARIABLE: str
 __version__: str
 
