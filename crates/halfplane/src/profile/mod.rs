@@ -177,6 +177,18 @@ impl Profile {
         &self.shape
     }
 
+    /// Whether the profile is convex (g' non-decreasing): always for Hertz, the flat punch with
+    /// rounded edges and the power law (exponent >= 1); for a tabulated profile, whether its
+    /// spline is (a fall of g' by 1e-12 of its largest value is taken as rounding). For a convex
+    /// profile the start-of-half test decides whether slip keeps one direction through each
+    /// half-cycle; for any other the steady analysis also samples each half (docs/validity.md).
+    pub fn is_convex(&self) -> bool {
+        match &self.slope {
+            Slope::Pieces(p) => p.convex,
+            Slope::Power(_) => true,
+        }
+    }
+
     /// Largest |x| where the profile is defined (infinite for analytic profiles).
     pub fn extent(&self) -> f64 {
         match &self.slope {

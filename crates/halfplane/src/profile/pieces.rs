@@ -43,6 +43,8 @@ pub(super) struct Pieces {
     /// `(a, J1(a, 0))` at piece boundaries a > 0 of a finite table (all of a small table, a
     /// geometric selection of a large one, always the last): brackets the contact law's inverse.
     pub(super) knot_moments: Vec<(f64, f64)>,
+    /// Whether g' is non-decreasing over the whole line (g convex), see [`Pieces::slope_never_falls`].
+    pub(super) convex: bool,
 }
 
 impl Pieces {
@@ -86,12 +88,36 @@ impl Pieces {
                 _ => pieces.push(p),
             }
         }
+        let convex = Self::slope_never_falls(&pieces, scale);
         Self {
             pieces,
             jumps,
             extent,
             knot_moments: Vec::new(),
+            convex,
         }
+    }
+
+    /// Whether g' is non-decreasing along the contiguous `pieces` (of g' scale `scale`): g'' (linear
+    /// on a piece) is non-negative at both ends of every piece and g' does not fall where pieces
+    /// meet. A fall of g' by at most 1e-12 of its scale counts as none: a spline fitted to a convex
+    /// table can be off by rounding.
+    fn slope_never_falls(pieces: &[Piece], scale: f64) -> bool {
+        let tolerance = 1e-12 * scale;
+        let within = pieces.iter().all(|p| {
+            let curvature = |x: f64| p.coeffs[1] + 2.0 * p.coeffs[2] * (x - p.origin);
+            if p.end.is_finite() && p.start.is_finite() {
+                let length = p.end - p.start;
+                curvature(p.start) * length >= -tolerance && curvature(p.end) * length >= -tolerance
+            } else {
+                // Only the analytic profiles have unbounded pieces: linear g', slope coeffs[1].
+                p.coeffs[2] == 0.0 && p.coeffs[1] >= 0.0
+            }
+        });
+        within
+            && pieces
+                .windows(2)
+                .all(|w| w[1].eval(w[0].end) - w[0].eval(w[0].end) >= -tolerance)
     }
 
     pub(super) fn check_extent(&self, what: &'static str, needed: f64) -> Result<()> {

@@ -14,7 +14,7 @@ use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::profile::Shape;
 use std::f64::consts::PI;
-pub use validity::check_slip_grows;
+pub use validity::{check_slip_grows, sample_slip_growth};
 
 mod validity;
 
@@ -185,10 +185,10 @@ impl Segment {
 ///   `dQ -/+ pi a_s dsigma/4 > f |dP|` (`-` at the left edge, `+` at the right); over the
 ///   two halves this is `dQ - pi a_max |dsigma|/4 > f |P2 - P1|`, which contains the paper's
 ///   end-point test `dQ > pi a_max |dsigma|/4` as the case `dP = 0`;
-/// - along each half, at 32 evenly spaced points with the exact boundary speeds (implicit
-///   function theorem on the stick-zone equations), the first failure located by bisection to
-///   1e-10 of the half. For Hertz the start-of-half test alone is sufficient (proved in
-///   `docs/validity.md`), so the scan is skipped.
+/// - along each half: for a convex profile ([`crate::Profile::is_convex`]: Hertz, flat-rounded,
+///   power law, a convex table) the start-of-half test implies it (proved in
+///   `docs/validity.md`), so nothing more is computed; for any other profile
+///   [`sample_slip_growth`] follows the partial path at 32 evenly spaced points of each half.
 ///
 /// Errors: [`Error::SlipReversesInHalf`] (with the half, edge and fraction where the slip zone
 /// first stops growing) and [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the
@@ -252,7 +252,7 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
         });
     }
     let (m, n) = (-zone.left, zone.right);
-    check_slip_grows(contact, cycle, options)?;
+    validity::check_slip_grows_with(contact, cycle, half_width, options)?;
     state.stick_zone = Some(zone);
     state.slip_zones = Some(PerEdge {
         left: half_width.map(|a| a - m),
