@@ -24,6 +24,7 @@ for i in $(seq "$repeats"); do
     printf "%-7s %-34s %s\n" "$i" "halfplane sweep hertz 1e6" "$(timed $bin sweep benches/sweep/hertz-1e6.toml -o $out/hertz-rust.csv)"
     printf "%-7s %-34s %s\n" "$i" "numpy hertz 1e6" "$(timed $py benches/sweep/hertz_numpy.py $out/hertz-numpy.csv)"
     printf "%-7s %-34s %s\n" "$i" "halfplane sweep flat-rounded 1e6" "$(timed $bin sweep benches/sweep/flat-rounded-1e6.toml -o $out/flat-rounded.csv)"
+    printf "%-7s %-34s %s\n" "$i" "halfplane sweep flat-rounded+tension" "$(timed $bin sweep benches/sweep/flat-rounded-tension-1e6.toml -o $out/flat-rounded-tension.csv)"
 done
 printf "%-7s %-34s %s\n" "1" "halfplane sweep march 1000" "$(timed $bin sweep benches/sweep/march-1000.toml -o $out/march.csv)"
 $py benches/sweep/hertz_numpy.py --compare $out/hertz-rust.csv $out/hertz-numpy.csv

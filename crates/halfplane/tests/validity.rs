@@ -485,7 +485,7 @@ fn on_random_cycles_sampling_never_contradicts_the_start_of_half_test() {
     };
     let options = SteadyOptions::default();
     for profile in profiles {
-        let (mut sampled, mut rejected) = (0, 0);
+        let (mut sampled, mut rejected, mut outside) = (0, 0, 0);
         for _ in 0..20_000 {
             let f = uniform(0.2, 1.0);
             let c = Contact::new(
@@ -507,12 +507,23 @@ fn on_random_cycles_sampling_never_contradicts_the_start_of_half_test() {
                     sampled += 1;
                 }
                 Err(Error::SlipReversesInHalf { .. }) => rejected += 1,
+                // The corollary in docs/validity.md: a zone outside the smaller contact fails
+                // the start-of-half test too.
+                Err(Error::StickZoneOutsideContact { .. }) => {
+                    assert!(
+                        steady::check_slip_grows(&c, &cycle, &options).is_err(),
+                        "{}, f {f}, {cycle:?}: zone outside the contact, start of half passed",
+                        label(&profile)
+                    );
+                    outside += 1;
+                }
                 _ => {}
             }
         }
         let shape = label(&profile);
         eprintln!(
-            "{shape}: {sampled} accepted and sampled, {rejected} rejected at the start of a half"
+            "{shape}: {sampled} accepted and sampled, {rejected} rejected at the start of a half, \
+             {outside} with the zone outside the smaller contact (all also failing it)"
         );
         assert!(
             sampled > 1000 && rejected > 100,
