@@ -153,18 +153,19 @@ def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
         if len(column) != rows:
             raise _bad(f"column {name!r} has {len(column)} rows, but 'profile' has {rows}")
         columns.append(column)
-    regime_codes, numbers, failed = _halfplane.steady_batch_columns(
+    regime_codes, numbers, failed_rows, messages = _halfplane.steady_batch_columns(
         columns, codes, names, None if threads is None else int(threads)
     )
-    regime = _REGIMES[regime_codes]
-    error = np.full(rows, "", dtype=object)
-    for row, message in failed:
-        error[row] = message
     index: pd.Index = table.index if isinstance(table, pd.DataFrame) else pd.RangeIndex(rows)
     # Text columns are object arrays of shared str objects: building pandas' string dtype from a
-    # million of them would cost more than solving the rows.
-    data: Dict[str, Any] = {"regime": pd.Series(regime, index=index, dtype=object, copy=False)}
-    for name, values in zip(STEADY_COLUMNS[1:-1], numbers):
-        data[name] = pd.Series(values, index=index, copy=False)
-    data["error"] = pd.Series(error, index=index, dtype=object, copy=False)
-    return pd.DataFrame(data, index=index, copy=False)
+    # million of them would cost more than solving the rows. `numbers` is (8, rows): its transpose
+    # is one float block of the frame, not copied.
+    error = np.full(rows, "", dtype=object)
+    if len(messages):
+        text = np.empty(len(messages), dtype=object)
+        text[:] = messages
+        error[failed_rows] = text
+    frame = pd.DataFrame(numbers.T, index=index, columns=STEADY_COLUMNS[1:-1], copy=False)
+    frame.insert(0, "regime", pd.Series(_REGIMES[regime_codes], index=index, dtype=object, copy=False))
+    frame["error"] = pd.Series(error, index=index, dtype=object, copy=False)
+    return frame
