@@ -94,6 +94,22 @@ impl Pieces {
         }
     }
 
+    /// One odd piece given for x >= 0 that holds on the whole line (Hertz: g' = x/R): exactly
+    /// what [`Pieces::symmetric`] builds from `vec![piece]` when the piece starts at 0, ends at
+    /// infinity and its odd extension is the same polynomial (its mirror image merged with it: no
+    /// jump at 0), without the general route's allocations and merging.
+    pub(super) fn whole_line(piece: Piece) -> Self {
+        Self {
+            pieces: vec![Piece {
+                end: piece.end,
+                ..piece.mirrored()
+            }],
+            jumps: Vec::new(),
+            extent: piece.end,
+            knot_moments: Vec::new(),
+        }
+    }
+
     pub(super) fn check_extent(&self, what: &'static str, needed: f64) -> Result<()> {
         if needed > self.extent {
             Err(Error::BeyondTable {
