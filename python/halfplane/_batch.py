@@ -71,8 +71,34 @@ def _numbers(name: str, values: Any) -> np.ndarray:
     raise _bad(f"column {name!r} must hold numbers; it has dtype {array.dtype}")
 
 
+#: The profile names a row may give, in the order of the codes :func:`_arrow_profiles` returns.
+_KINDS = ["hertz", "flat-rounded", "power-law"]
+
+
+def _arrow_profiles(values: pd.Series) -> Optional[Tuple[np.ndarray, List[str]]]:
+    """Codes of a column of pandas' Arrow-backed strings (pandas >= 3's default for text) by one
+    hash lookup per row into the three valid names, or None when it is not such a column or holds
+    another name (then :func:`pd.factorize` gives the names for the messages)."""
+    if not isinstance(values.array, pd.arrays.ArrowStringArray):
+        return None
+    try:
+        import pyarrow as pa
+        import pyarrow.compute as pc
+    except ImportError:  # pragma: no cover - Arrow-backed strings need pyarrow
+        return None
+    strings = pa.array(values.array)
+    codes = pc.index_in(strings, value_set=pa.array(_KINDS, type=strings.type))
+    if codes.null_count != strings.null_count:
+        return None
+    return np.ascontiguousarray(codes.fill_null(-1).to_numpy(), dtype=np.int64), list(_KINDS)
+
+
 def _profiles(values: Any) -> Tuple[np.ndarray, List[str]]:
     """Codes into a list of distinct names (-1 where missing); ValueError if not strings."""
+    if isinstance(values, pd.Series):
+        arrow = _arrow_profiles(values)
+        if arrow is not None:
+            return arrow
     if isinstance(values, pd.Series) and isinstance(values.dtype, pd.CategoricalDtype):
         names = list(values.cat.categories)
         if not all(isinstance(n, str) for n in names):
