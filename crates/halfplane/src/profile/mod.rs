@@ -347,11 +347,23 @@ mod tests {
                     .pieces
                     .iter()
                     .map(|q| {
-                        [q.start, q.end, q.origin, q.coeffs[0], q.coeffs[1], q.coeffs[2]]
-                            .map(f64::to_bits)
+                        [
+                            q.start,
+                            q.end,
+                            q.origin,
+                            q.coeffs[0],
+                            q.coeffs[1],
+                            q.coeffs[2],
+                        ]
+                        .map(f64::to_bits)
                     })
                     .collect();
-                (pieces, p.jumps.clone(), p.extent.to_bits(), p.knot_moments.clone())
+                (
+                    pieces,
+                    p.jumps.clone(),
+                    p.extent.to_bits(),
+                    p.knot_moments.clone(),
+                )
             };
             assert_eq!(bits(direct), bits(&general), "R = {radius}");
         }
