@@ -107,7 +107,7 @@ impl Batch {
     {
         let rows = out.rows()?;
         let pool = self.pool()?;
-        let threads = pool.current_num_threads().max(1);
+        let threads = pool.as_ref().map_or(1, |p| p.current_num_threads().max(1));
         let leaf = self
             .chunk_rows()
             .div_ceil(threads.saturating_mul(BLOCKS_PER_THREAD))
@@ -117,7 +117,10 @@ impl Batch {
             let take = self.chunk_rows().min(rows - first);
             let (chunk, tail) = rest.split_rows(take);
             rest = tail;
-            let values = pool.install(|| solve_blocks(first, chunk, take, leaf, &solve));
+            let values = match &pool {
+                Some(pool) => pool.install(|| solve_blocks(first, chunk, take, leaf, &solve)),
+                None => vec![solve(first, chunk)],
+            };
             if let ControlFlow::Break(value) = between(first, values) {
                 return Ok(Some(value));
             }
