@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
@@ -81,9 +82,9 @@ def _arrow_profiles(values: pd.Series) -> Optional[Tuple[np.ndarray, List[str]]]
     another name (then :func:`pd.factorize` gives the names for the messages)."""
     if not isinstance(values.array, pd.arrays.ArrowStringArray):
         return None
-    try:
-        import pyarrow as pa
-        import pyarrow.compute as pc
+    try:  # imported by name: pyarrow ships no type information
+        pa = importlib.import_module("pyarrow")
+        pc = importlib.import_module("pyarrow.compute")
     except ImportError:  # pragma: no cover - Arrow-backed strings need pyarrow
         return None
     strings = pa.array(values.array)
