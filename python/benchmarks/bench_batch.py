@@ -9,6 +9,7 @@
 
 Run from the repository root after `pip install "./python[dask]"`:
     python python/benchmarks/bench_batch.py [--rows 1000000] [--dask-rows 10000000]
+        [--partition-rows 250000[,1000000,...]]
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from __future__ import annotations
 import argparse
 import os
 import time
-from typing import Callable, Dict, Tuple
+from typing import Callable, Dict, List, Tuple
 
 import numpy as np
 import pandas as pd
@@ -128,33 +129,42 @@ def _reduce(out: pd.DataFrame) -> pd.DataFrame:
                          "stick_left": [float(np.nansum(out.stick_left))]})
 
 
-def dask(n: int, partition_rows: int) -> None:
+def dask(n: int, partition_sizes: List[int]) -> None:
+    """For each partition size: the same partitions generated, solved (all threads) and reduced in
+    a loop in this process, then on the cluster; the two measured back to back."""
     import dask.dataframe as dd
     from distributed import Client, LocalCluster
 
     import halfplane.dask as hdask
 
-    parts = max(1, n // partition_rows)
-    seeds = list(range(parts))
-    start = time.perf_counter()
-    totals = [_reduce(halfplane.steady_batch(_partition(s, partition_rows))) for s in seeds]
-    local = time.perf_counter() - start
-    local_solved = sum(int(t["solved"].iloc[0]) for t in totals)
+    sample = _partition(0, 10)
+    # Explicit metas, so that the client does not generate and solve a partition to infer them.
+    rows_meta = sample.iloc[:0]
+    reduced_meta = _reduce(halfplane.steady_batch(sample)).iloc[:0]
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster, Client(cluster) as client:
-        warm = dd.from_map(_partition, seeds[:2], rows=1000)
-        hdask.steady_batch(warm).map_partitions(_reduce).compute()
-        start = time.perf_counter()
-        ddf = dd.from_map(_partition, seeds, rows=partition_rows)
-        reduced = hdask.steady_batch(ddf).map_partitions(_reduce).compute()
-        remote = time.perf_counter() - start
+        warm = dd.from_map(_partition, [0, 1, 2, 3], rows=1000, meta=rows_meta)
+        hdask.steady_batch(warm).map_partitions(_reduce, meta=reduced_meta).compute()
+        print(f"Dask, {n:,} Hertz rows (rows generated and reduced where solved), "
+              "wall and CPU of this process:")
+        for partition_rows in partition_sizes:
+            parts = max(1, n // partition_rows)
+            seeds = list(range(parts))
+            start, start_cpu = time.perf_counter(), time.process_time()
+            totals = [_reduce(halfplane.steady_batch(_partition(s, partition_rows))) for s in seeds]
+            local, local_cpu = time.perf_counter() - start, time.process_time() - start_cpu
+            local_solved = sum(int(t["solved"].iloc[0]) for t in totals)
+            start, start_cpu = time.perf_counter(), time.process_time()
+            ddf = dd.from_map(_partition, seeds, rows=partition_rows, meta=rows_meta)
+            reduced = hdask.steady_batch(ddf).map_partitions(_reduce, meta=reduced_meta).compute()
+            remote, remote_cpu = time.perf_counter() - start, time.process_time() - start_cpu
+            solved = int(reduced["solved"].sum())
+            rows = parts * partition_rows
+            print(f"  {parts:4d} partitions of {partition_rows:>9,}: in-process {local:7.3f} s "
+                  f"(CPU {local_cpu:6.3f} s, {rows / local / 1e6:5.2f} M rows/s), LocalCluster 2 x 1 "
+                  f"thread {remote:7.3f} s ({rows / remote / 1e6:5.2f} M rows/s): "
+                  f"Dask / in-process {local / remote:4.0%}   (solved rows equal: {solved == local_solved})")
         del client
-    solved = int(reduced["solved"].sum())
-    print(f"Dask, {parts * partition_rows:,} Hertz rows in {parts} partitions of {partition_rows:,}"
-          " (rows generated and reduced where solved):")
-    print(f"  in-process, all threads     {local:8.3f} s   {parts * partition_rows / local / 1e6:6.2f} M rows/s")
-    print(f"  LocalCluster 2 x 1 thread   {remote:8.3f} s   {parts * partition_rows / remote / 1e6:6.2f} M rows/s")
-    print(f"  Dask / in-process throughput: {local / remote:.0%}   (solved rows equal: {solved == local_solved})")
 
 
 def main() -> None:
@@ -162,13 +172,14 @@ def main() -> None:
     parser.add_argument("--rows", type=int, default=1_000_000)
     parser.add_argument("--flat-rows", type=int, default=100_000)
     parser.add_argument("--dask-rows", type=int, default=10_000_000)
-    parser.add_argument("--partition-rows", type=int, default=250_000)
+    parser.add_argument("--partition-rows", default="250000",
+                        help="rows per Dask partition; several, comma-separated, are compared")
     parser.add_argument("--skip-dask", action="store_true")
     args = parser.parse_args()
     hertz(args.rows)
     flat(args.flat_rows)
     if not args.skip_dask:
-        dask(args.dask_rows, args.partition_rows)
+        dask(args.dask_rows, [int(r) for r in args.partition_rows.split(",")])
 
 
 if __name__ == "__main__":

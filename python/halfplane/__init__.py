@@ -115,7 +115,8 @@ def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> Marc
     4 x 8 bytes x increments x cells, e.g. 3.8 MB for 300 increments of 400 cells and 1 GB for
     100,000 increments of 320 cells (a MemoryError is raised if that cannot be allocated).
 
-    The GIL is released while marching; a march cannot be interrupted once started.
+    The GIL is released while marching; Ctrl-C interrupts the march between increments (it is
+    checked every 50 ms) with KeyboardInterrupt.
     """
     if cells is not None:
         cells = _count("cells", cells)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
@@ -71,8 +72,34 @@ def _numbers(name: str, values: Any) -> np.ndarray:
     raise _bad(f"column {name!r} must hold numbers; it has dtype {array.dtype}")
 
 
+#: The profile names a row may give, in the order of the codes :func:`_arrow_profiles` returns.
+_KINDS = ["hertz", "flat-rounded", "power-law"]
+
+
+def _arrow_profiles(values: pd.Series) -> Optional[Tuple[np.ndarray, List[str]]]:
+    """Codes of a column of pandas' Arrow-backed strings (pandas >= 3's default for text) by one
+    hash lookup per row into the three valid names, or None when it is not such a column or holds
+    another name (then :func:`pd.factorize` gives the names for the messages)."""
+    if not isinstance(values.array, pd.arrays.ArrowStringArray):
+        return None
+    try:  # imported by name: pyarrow ships no type information
+        pa = importlib.import_module("pyarrow")
+        pc = importlib.import_module("pyarrow.compute")
+    except ImportError:  # pragma: no cover - Arrow-backed strings need pyarrow
+        return None
+    strings = pa.array(values.array)
+    codes = pc.index_in(strings, value_set=pa.array(_KINDS, type=strings.type))
+    if codes.null_count != strings.null_count:
+        return None
+    return np.ascontiguousarray(codes.fill_null(-1).to_numpy(), dtype=np.int64), list(_KINDS)
+
+
 def _profiles(values: Any) -> Tuple[np.ndarray, List[str]]:
     """Codes into a list of distinct names (-1 where missing); ValueError if not strings."""
+    if isinstance(values, pd.Series):
+        arrow = _arrow_profiles(values)
+        if arrow is not None:
+            return arrow
     if isinstance(values, pd.Series) and isinstance(values.dtype, pd.CategoricalDtype):
         names = list(values.cat.categories)
         if not all(isinstance(n, str) for n in names):
@@ -153,18 +180,19 @@ def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
         if len(column) != rows:
             raise _bad(f"column {name!r} has {len(column)} rows, but 'profile' has {rows}")
         columns.append(column)
-    regime_codes, numbers, failed = _halfplane.steady_batch_columns(
+    regime_codes, numbers, failed_rows, messages = _halfplane.steady_batch_columns(
         columns, codes, names, None if threads is None else int(threads)
     )
-    regime = _REGIMES[regime_codes]
-    error = np.full(rows, "", dtype=object)
-    for row, message in failed:
-        error[row] = message
     index: pd.Index = table.index if isinstance(table, pd.DataFrame) else pd.RangeIndex(rows)
     # Text columns are object arrays of shared str objects: building pandas' string dtype from a
-    # million of them would cost more than solving the rows.
-    data: Dict[str, Any] = {"regime": pd.Series(regime, index=index, dtype=object, copy=False)}
-    for name, values in zip(STEADY_COLUMNS[1:-1], numbers):
-        data[name] = pd.Series(values, index=index, copy=False)
-    data["error"] = pd.Series(error, index=index, dtype=object, copy=False)
-    return pd.DataFrame(data, index=index, copy=False)
+    # million of them would cost more than solving the rows. `numbers` is (8, rows): its transpose
+    # is one float block of the frame, not copied.
+    error = np.full(rows, "", dtype=object)
+    if len(messages):
+        text = np.empty(len(messages), dtype=object)
+        text[:] = messages
+        error[failed_rows] = text
+    frame = pd.DataFrame(numbers.T, index=index, columns=STEADY_COLUMNS[1:-1], copy=False)
+    frame.insert(0, "regime", pd.Series(_REGIMES[regime_codes], index=index, dtype=object, copy=False))
+    frame["error"] = pd.Series(error, index=index, dtype=object, copy=False)
+    return frame

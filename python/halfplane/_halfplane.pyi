@@ -93,7 +93,7 @@ def steady_batch_columns(
     profile_index: npt.NDArray[np.int64],
     profile_names: Sequence[str],
     threads: Optional[int] = None,
-) -> Tuple[npt.NDArray[np.int8], List[npt.NDArray[np.float64]], List[Tuple[int, str]]]: ...
+) -> Tuple[npt.NDArray[np.int8], npt.NDArray[np.float64], npt.NDArray[np.int64], List[str]]: ...
 def stress_points(
     case: Case,
     x: npt.NDArray[np.float64],

@@ -1,6 +1,7 @@
 //! The single-case analyses: `steady`, `evolve` and `march`. Each computes with the GIL released
 //! and returns the CLI's own report (the same rows and JSON), which the Python layer turns into
-//! result objects and DataFrames.
+//! result objects and DataFrames. A march, which may run for minutes, takes the GIL back between
+//! increments every so often to see Ctrl-C.
 
 use crate::case::PyCase;
 use crate::errors;
@@ -13,6 +14,8 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::ops::ControlFlow;
+use std::time::{Duration, Instant};
 
 /// `steady --json` of the case, and the note the CLI prints on stderr when the asymptotic
 /// estimate is unavailable.
@@ -99,6 +102,10 @@ impl Recorded {
     }
 }
 
+/// How often a march takes the GIL back, between increments, to see Ctrl-C: often enough that an
+/// interrupt feels immediate, rarely enough that the check costs nothing measurable.
+const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
+
 /// Marches the case's history: `march --csv` (the steps), the cycles (index, energy, largest
 /// slip amplitude, as `march --json`), the shakedown cycle, the cell centres and, with `fields`,
 /// the four fields of every increment as (increments, cells) arrays.
@@ -129,15 +136,26 @@ pub fn march_report<'py>(
         false => None,
     };
     let contact = &case.contact;
-    let result = py
-        .detach(|| {
-            march::march(contact, &history, &options, |_, f| {
-                if let Some(r) = recorded.as_mut() {
-                    r.observe(f);
-                }
-            })
+    let mut last_check = Instant::now();
+    let outcome = py.detach(|| {
+        march::march_until(contact, &history, &options, |_, f| {
+            if let Some(r) = recorded.as_mut() {
+                r.observe(f);
+            }
+            if last_check.elapsed() < SIGNAL_CHECK_INTERVAL {
+                return ControlFlow::Continue(());
+            }
+            last_check = Instant::now();
+            match Python::attach(|py| py.check_signals()) {
+                Ok(()) => ControlFlow::Continue(()),
+                Err(interrupt) => ControlFlow::Break(interrupt),
+            }
         })
-        .map_err(|e| errors::from_library(py, &e))?;
+    });
+    let result = match outcome.map_err(|e| errors::from_library(py, &e))? {
+        ControlFlow::Continue(result) => result,
+        ControlFlow::Break(interrupt) => return Err(interrupt),
+    };
     let report = MarchReport::new(&result, &case.units);
     let out = PyDict::new(py);
     out.set_item("steps_csv", report.csv())?;

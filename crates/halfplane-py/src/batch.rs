@@ -1,11 +1,14 @@
 //! `steady_batch` on numpy columns: every row solved by [`halfplane::batch::SteadyRow`] on the
-//! library's batch engine, with the GIL released; between chunks the calling thread takes the GIL
-//! back just long enough to see Ctrl-C.
+//! library's batch engine ([`Batch::fill`]: each worker writes its own rows of the output arrays),
+//! with the GIL released; between chunks the calling thread takes the GIL back just long enough
+//! to see Ctrl-C.
 
 use crate::errors;
-use halfplane::batch::{Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_INPUT_COLUMNS};
+use halfplane::batch::{
+    Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_COLUMNS, STEADY_INPUT_COLUMNS,
+};
 use halfplane::{Error, Regime, SteadyOptions};
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use std::ops::ControlFlow;
@@ -30,15 +33,34 @@ fn numeric_columns() -> impl Iterator<Item = &'static str> {
 /// How many numeric input columns there are.
 const NUMERIC_COUNT: usize = STEADY_INPUT_COLUMNS.len() - 1;
 
-/// Regime codes, the eight numbers of `STEADY_COLUMNS`, and (row, message) of failed rows.
+/// Regime codes, the eight numbers of `STEADY_COLUMNS` as one (8, rows) array (a column per
+/// row of it), the failed rows, in order, and their messages.
 type Output<'py> = (
     Bound<'py, PyArray1<i8>>,
-    Vec<Bound<'py, PyArray1<f64>>>,
-    Vec<(usize, String)>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i64>>,
+    Vec<String>,
 );
 
+/// The columns one worker writes: regime codes and the eight numbers, for a block of rows.
+type Block<'a> = (&'a mut [i8], [&'a mut [f64]; NUMBER_COUNT]);
+
+/// How many numbers a summary has (`STEADY_COLUMNS` without `regime` and `error`).
+const NUMBER_COUNT: usize = STEADY_COLUMNS.len() - 2;
+
+/// `values` (NUMBER_COUNT x rows, row-major) as one slice per column.
+fn number_columns(values: &mut [f64], rows: usize) -> [&mut [f64]; NUMBER_COUNT] {
+    let mut rest = values;
+    std::array::from_fn(|_| {
+        let (column, tail) = std::mem::take(&mut rest).split_at_mut(rows);
+        rest = tail;
+        column
+    })
+}
+
 /// Solves the rows of the columns (in the order of `numeric_columns`; `None` for an absent profile
-/// parameter) with profile `profile_names[profile_index[i]]` (-1: missing), on `threads` workers.
+/// parameter) with profile `profile_names[profile_index[i]]` (-1: missing), on `threads` workers,
+/// each worker writing its own rows of the output.
 #[pyfunction]
 #[pyo3(signature = (columns, profile_index, profile_names, threads=None))]
 pub fn steady_batch_columns<'py>(
@@ -84,9 +106,10 @@ pub fn steady_batch_columns<'py>(
     let batch = Batch::new(threads).map_err(|e| errors::from_library(py, &e))?;
     let options = SteadyOptions::default();
     let value = |column: usize, row: usize| slices[column].map_or(f64::NAN, |s| s[row]);
-    let solve = |i: usize| -> Result<SteadySummary, Error> {
+    let summary = |i: usize| -> Result<SteadySummary, Error> {
         let kind = match usize::try_from(index[i]).ok().and_then(|k| kinds.get(k)) {
-            Some(k) => k.clone()?,
+            Some(Ok(k)) => *k,
+            Some(Err(e)) => return Err(e.clone()),
             None => {
                 return Err(Error::InvalidText {
                     field: "profile".into(),
@@ -107,28 +130,42 @@ pub fn steady_batch_columns<'py>(
         }
         .steady_summary(&options)
     };
-    let mut regimes: Vec<i8> = Vec::with_capacity(rows);
-    let mut numbers: [Vec<f64>; 8] = std::array::from_fn(|_| Vec::with_capacity(rows));
-    let mut failed = Vec::new();
-    let outcome = py.detach(|| {
-        batch.run(rows, solve, |first, results| {
-            for (k, r) in results.into_iter().enumerate() {
-                match r {
-                    Ok(s) => {
-                        regimes.push(code(s.regime()));
-                        for (column, x) in numbers.iter_mut().zip(s.numbers()) {
-                            column.push(x);
-                        }
-                    }
-                    Err(e) => {
-                        regimes.push(-1);
-                        for column in numbers.iter_mut() {
-                            column.push(f64::NAN);
-                        }
-                        failed.push((first + k, e.to_string()));
-                    }
+    // The outputs are numpy's own arrays, written in place while the GIL is released: numpy
+    // backs large arrays with huge pages, so the first write into 65 bytes per row faults far
+    // less than a fresh Vec does. Every row writes all its values: the zeros are never read.
+    let regimes = PyArray1::<i8>::zeros(py, rows, false);
+    let numbers = PyArray2::<f64>::zeros(py, [NUMBER_COUNT, rows], false);
+    let mut regimes_view = regimes.readwrite();
+    let mut numbers_view = numbers.readwrite();
+    let contiguous = |e: numpy::AsSliceError| PyValueError::new_err(e.to_string());
+    let out: Block = (
+        regimes_view.as_slice_mut().map_err(contiguous)?,
+        number_columns(numbers_view.as_slice_mut().map_err(contiguous)?, rows),
+    );
+    let solve = |first: usize, (regime, mut numbers): Block| -> Vec<(usize, String)> {
+        let mut failed = Vec::new();
+        for (k, code_out) in regime.iter_mut().enumerate() {
+            let row = match summary(first + k) {
+                Ok(s) => {
+                    *code_out = code(s.regime());
+                    s.numbers()
                 }
+                Err(e) => {
+                    *code_out = -1;
+                    failed.push((first + k, e.to_string()));
+                    [f64::NAN; NUMBER_COUNT]
+                }
+            };
+            for (column, x) in numbers.iter_mut().zip(row) {
+                column[k] = x;
             }
+        }
+        failed
+    };
+    let mut failed: Vec<(usize, String)> = Vec::new();
+    let outcome = py.detach(|| {
+        batch.fill(out, solve, |_, blocks| {
+            failed.extend(blocks.into_iter().flatten());
             match Python::attach(|py| py.check_signals()) {
                 Ok(()) => ControlFlow::Continue(()),
                 Err(interrupt) => ControlFlow::Break(interrupt),
@@ -138,13 +175,16 @@ pub fn steady_batch_columns<'py>(
     match outcome {
         Err(e) => Err(errors::from_library(py, &e)),
         Ok(Some(interrupt)) => Err(interrupt),
-        Ok(None) => Ok((
-            PyArray1::from_vec(py, regimes),
-            numbers
-                .into_iter()
-                .map(|v| PyArray1::from_vec(py, v))
-                .collect(),
-            failed,
-        )),
+        Ok(None) => {
+            let (failed_rows, messages): (Vec<i64>, Vec<String>) =
+                failed.into_iter().map(|(r, m)| (r as i64, m)).unzip();
+            drop((regimes_view, numbers_view));
+            Ok((
+                regimes,
+                numbers,
+                PyArray1::from_vec(py, failed_rows),
+                messages,
+            ))
+        }
     }
 }

@@ -1,10 +1,12 @@
 //! Many independent analyses at once: the engine behind Python's `steady_batch` and the CLI's
 //! `sweep`.
 //!
-//! Cases are solved on a rayon pool in chunks. Each chunk's results are handed to a sink, in row
-//! order, before the next chunk starts, so an output of any length is streamed with at most one
-//! chunk in memory, and the sink (or a caller's interrupt check inside it) may stop the run between
-//! chunks. A case that fails is a row carrying its error, never an abort of the batch. Results do
+//! Cases are solved on a rayon pool in chunks. With [`Batch::run`] each chunk's results are handed
+//! to a sink, in row order, before the next chunk starts, so an output of any length is streamed
+//! with at most one chunk in memory; with [`Batch::fill`] rows are solved straight into
+//! preallocated output columns, each worker writing its own block of rows (nothing is copied on
+//! the calling thread). Either way a caller's check between chunks (an interrupt, a full disk)
+//! may stop the run. A case that fails is a row carrying its error, never an abort of the batch. Results do
 //! not depend on the number of threads: every row is solved by the same sequential code.
 
 use crate::error::{Error, Result};
@@ -16,7 +18,9 @@ use crate::{Contact, Cycle};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 
+mod fill;
 pub mod row;
+pub use fill::RowBlock;
 pub use row::{ProfileKind, SteadyRow, STEADY_INPUT_COLUMNS};
 
 /// The environment variable that sizes the pool when no thread count is given.
@@ -100,24 +104,38 @@ impl Batch {
     where
         O: Send,
     {
-        let mut builder = rayon::ThreadPoolBuilder::new();
-        if let Some(n) = self.threads {
-            builder = builder.num_threads(n);
-        }
-        let pool = builder.build().map_err(|e| Error::ThreadPool {
-            message: e.to_string(),
-        })?;
+        let pool = self.pool()?;
         let mut first = 0;
         while first < rows {
             let end = rows.min(first.saturating_add(self.chunk_rows));
-            let results: Vec<O> =
-                pool.install(|| (first..end).into_par_iter().map(&solve).collect());
+            let results: Vec<O> = match &pool {
+                Some(pool) => pool.install(|| (first..end).into_par_iter().map(&solve).collect()),
+                None => (first..end).map(&solve).collect(),
+            };
             if let ControlFlow::Break(value) = sink(first, results) {
                 return Ok(Some(value));
             }
             first = end;
         }
         Ok(None)
+    }
+}
+
+impl Batch {
+    /// A pool of the batch's size, or `None` for one thread: the rows are then solved on the
+    /// calling thread, which saves starting a thread per call (milliseconds on a loaded machine,
+    /// paid per task by a Dask worker with one thread).
+    fn pool(&self) -> Result<Option<rayon::ThreadPool>> {
+        if self.threads == Some(1) {
+            return Ok(None);
+        }
+        let mut builder = rayon::ThreadPoolBuilder::new();
+        if let Some(n) = self.threads {
+            builder = builder.num_threads(n);
+        }
+        builder.build().map(Some).map_err(|e| Error::ThreadPool {
+            message: e.to_string(),
+        })
     }
 }
 

@@ -285,6 +285,16 @@ pub enum Error {
         message: String,
     },
 
+    /// The output columns handed to a batch ([`crate::batch::Batch::fill`]) hold different
+    /// numbers of rows (a caller's allocation error: every column needs one value per row).
+    #[error("the output columns of a batch hold different numbers of rows ({rows} and {other}); every column needs one value per row")]
+    UnequalColumns {
+        /// Rows of the first column.
+        rows: usize,
+        /// Rows of a column that differs from it.
+        other: usize,
+    },
+
     /// Prototype-to-test matching ([`crate::matching`]) found no valid test: the prototype's
     /// cycle, or the test cycle the matching equations give, fails `constraint`.
     #[error(

@@ -10,6 +10,8 @@ use crate::error::{physical_positive, Error, Result};
 pub struct Material {
     youngs_modulus: f64,
     poisson_ratio: f64,
+    /// `A = 4(1 - nu^2)/E`, computed once: a solve asks for it many times.
+    compliance: f64,
 }
 
 impl Material {
@@ -27,6 +29,7 @@ impl Material {
         Ok(Self {
             youngs_modulus,
             poisson_ratio,
+            compliance: 4.0 * (1.0 - poisson_ratio * poisson_ratio) / youngs_modulus,
         })
     }
 
@@ -43,7 +46,7 @@ impl Material {
     /// Composite compliance of the two half-planes in plane strain, `A = 4(1 - nu^2)/E`
     /// (paper, below eq. (3); docs/theory.md, "Conventions").
     pub fn compliance(&self) -> Compliance {
-        Compliance(4.0 * (1.0 - self.poisson_ratio * self.poisson_ratio) / self.youngs_modulus)
+        Compliance(self.compliance)
     }
 }
 

@@ -56,6 +56,7 @@ impl Contact {
     /// `dP/da`, exact for every profile (derivative of the same integral); for Hertz its closed
     /// form `dP/da = pi a/(A R)`, the derivative of `P = pi a^2/(2 A R)` (paper eq. (24)).
     /// Errors when dP/da is not finite and >= 0, as [`Contact::load`].
+    #[inline]
     pub fn load_rate(&self, half_width: f64) -> Result<f64> {
         positive("contact half-width", half_width)?;
         let rate = match self.profile.shape() {
@@ -76,31 +77,36 @@ impl Contact {
     ///
     /// Errors also when the inputs' scales make the half-width overflow or underflow (for
     /// example P = 1e-300 on R = 1e-300), so an `Ok` half-width is always finite and > 0.
+    #[inline]
     pub fn half_width(&self, normal: f64) -> Result<f64> {
         let a = self.solve_half_width(normal)?;
         in_range(a, a > 0.0, "normal load", normal, "a load whose contact half-width is finite and > 0 for this profile and material (the scales overflow or underflow)")
     }
 
+    /// The closed forms inline (a steady analysis asks for a few half-widths, a batch for millions);
+    /// the iteration of the other profiles is [`Contact::iterate_half_width`].
+    #[inline]
     fn solve_half_width(&self, normal: f64) -> Result<f64> {
         positive("normal load", normal)?;
         let a_comp = self.compliance().value();
         match self.profile.shape() {
-            Shape::Hertz { radius } => {
-                return Ok(closed_form::hertz_half_width(a_comp, *radius, normal))
-            }
+            Shape::Hertz { radius } => Ok(closed_form::hertz_half_width(a_comp, *radius, normal)),
             Shape::PowerLaw {
                 coefficient,
                 exponent,
-            } => {
-                return Ok(closed_form::power_law_half_width(
-                    a_comp,
-                    *coefficient,
-                    *exponent,
-                    normal,
-                ))
-            }
-            _ => {}
+            } => Ok(closed_form::power_law_half_width(
+                a_comp,
+                *coefficient,
+                *exponent,
+                normal,
+            )),
+            _ => self.iterate_half_width(normal, a_comp),
         }
+    }
+
+    /// The half-width of a profile without a closed form (flat-rounded, tabulated): bracketed
+    /// Newton on [`Contact::load`]; `a_comp` is the compliance A.
+    fn iterate_half_width(&self, normal: f64, a_comp: f64) -> Result<f64> {
         // Bracket [lo, hi] with P(lo) <= normal <= P(hi) (P increases with a), and a first guess.
         let (mut lo, mut hi, mut a) = match self.profile.moment_bracket(a_comp * normal) {
             // Tabulated: the knot table gives a one-interval bracket; interpolate as if J1 ~ a^2.
@@ -264,6 +270,7 @@ impl Contact {
 }
 
 /// `Ok(value)` when it is finite and `ok` holds; otherwise the input that led to it is reported.
+#[inline]
 fn in_range(value: f64, ok: bool, field: &str, input: f64, valid: &'static str) -> Result<f64> {
     if value.is_finite() && ok {
         Ok(value)

@@ -149,6 +149,7 @@ impl SteadyRow {
     /// [`Error::InvalidInput`] naming the column of an invalid value (a parameter the kind needs
     /// that is NaN is invalid), and [`Error::NotUsed`] for a parameter the kind does not use that
     /// is not NaN (a value in the wrong column is never ignored silently).
+    #[inline]
     pub fn contact(&self) -> Result<Contact> {
         let uses = self.profile.uses();
         for ((column, value), used) in SHAPE_COLUMNS.iter().zip(self.shape).zip(uses) {
@@ -176,6 +177,7 @@ impl SteadyRow {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming the column of an invalid load.
+    #[inline]
     pub fn cycle(&self) -> Result<Cycle> {
         let point = |name: &str, [p, q, s]: [f64; 3]| LoadPoint::new(name, p, q, s);
         Ok(Cycle::new(

@@ -105,7 +105,7 @@ impl Profile {
         };
         Ok(Self {
             shape: Shape::Hertz { radius },
-            slope: Slope::Pieces(Pieces::symmetric(vec![piece], &[])),
+            slope: Slope::Pieces(Pieces::whole_line(piece)),
         })
     }
 
@@ -335,6 +335,53 @@ mod tests {
     /// Fuzz finding (lib_steady): an edge radius of 5e-324 was accepted; 1/R = inf made the
     /// moments NaN (P(a) = NaN for a flat-rounded punch with b = 1, a = 2). Radii are now bounded
     /// to 1e-30..1e30 (MAGNITUDE_LIMIT).
+    /// A Hertz profile is built directly as one polynomial on the whole line (the batch builds
+    /// one per row); it must be the general construction's result bit for bit, signed zeros
+    /// included, so that every integral is unchanged.
+    #[test]
+    fn hertz_slope_is_the_general_symmetric_construction() {
+        use super::pieces::{Piece, Pieces};
+        use super::{Profile, Slope};
+        for radius in [1e-30, 0.37, 50.0, 1e30] {
+            let piece = Piece {
+                start: 0.0,
+                end: f64::INFINITY,
+                origin: 0.0,
+                coeffs: [0.0, 1.0 / radius, 0.0],
+            };
+            let general = Pieces::symmetric(vec![piece], &[]);
+            let profile = Profile::hertz(radius).expect("valid radius");
+            let Slope::Pieces(direct) = &profile.slope else {
+                panic!("Hertz must use the piecewise-polynomial route");
+            };
+            let bits = |p: &Pieces| {
+                let pieces: Vec<[u64; 6]> = p
+                    .pieces
+                    .iter()
+                    .map(|q| {
+                        [
+                            q.start,
+                            q.end,
+                            q.origin,
+                            q.coeffs[0],
+                            q.coeffs[1],
+                            q.coeffs[2],
+                        ]
+                        .map(f64::to_bits)
+                    })
+                    .collect();
+                (
+                    pieces,
+                    p.jumps.clone(),
+                    p.extent.to_bits(),
+                    p.knot_moments.clone(),
+                    p.convex,
+                )
+            };
+            assert_eq!(bits(direct), bits(&general), "R = {radius}");
+        }
+    }
+
     #[test]
     fn radius_outside_the_magnitude_range_is_rejected() {
         for r in [5e-324, 1e-310, 9.9e-31, 1.1e30] {

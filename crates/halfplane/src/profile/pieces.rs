@@ -33,10 +33,36 @@ impl Piece {
     }
 }
 
+/// The pieces of a slope: one held inline (Hertz, built once per row of a batch, needs no
+/// allocation) or any number on the heap. Reads as a slice either way.
+#[derive(Debug, Clone)]
+pub(super) enum PieceList {
+    One([Piece; 1]),
+    Many(Vec<Piece>),
+}
+
+impl std::ops::Deref for PieceList {
+    type Target = [Piece];
+
+    fn deref(&self) -> &[Piece] {
+        match self {
+            Self::One(piece) => piece,
+            Self::Many(pieces) => pieces,
+        }
+    }
+}
+
+/// Equal when the pieces are, however they are held.
+impl PartialEq for PieceList {
+    fn eq(&self, other: &Self) -> bool {
+        **self == **other
+    }
+}
+
 /// g' as contiguous polynomial pieces over `[-extent, extent]`, with the jumps of g' at breaks.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Pieces {
-    pub(super) pieces: Vec<Piece>,
+    pub(super) pieces: PieceList,
     /// `(x, g'(x+) - g'(x-))` for the breaks where g' jumps, over the whole line.
     pub(super) jumps: Vec<(f64, f64)>,
     pub(super) extent: f64,
@@ -90,7 +116,7 @@ impl Pieces {
         }
         let convex = Self::slope_never_falls(&pieces, scale);
         Self {
-            pieces,
+            pieces: PieceList::Many(pieces),
             jumps,
             extent,
             knot_moments: Vec::new(),
@@ -118,6 +144,24 @@ impl Pieces {
             && pieces
                 .windows(2)
                 .all(|w| w[1].eval(w[0].end) - w[0].eval(w[0].end) >= -tolerance)
+    }
+
+    /// One odd piece given for x >= 0 that holds on the whole line (Hertz: g' = x/R): exactly
+    /// what [`Pieces::symmetric`] builds from `vec![piece]` when the piece starts at 0, ends at
+    /// infinity and its odd extension is the same polynomial (its mirror image merged with it: no
+    /// jump at 0), without the general route's merging or any allocation.
+    pub(super) fn whole_line(piece: Piece) -> Self {
+        let whole = Piece {
+            end: piece.end,
+            ..piece.mirrored()
+        };
+        Self {
+            pieces: PieceList::One([whole]),
+            jumps: Vec::new(),
+            extent: piece.end,
+            knot_moments: Vec::new(),
+            convex: Self::slope_never_falls(&[whole], 0.0),
+        }
     }
 
     pub(super) fn check_extent(&self, what: &'static str, needed: f64) -> Result<()> {
