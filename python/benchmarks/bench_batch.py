@@ -5,11 +5,14 @@
    and the sliding test) on the same rows. Ratio = numpy time / steady_batch time.
 2. Flat-rounded rows per second (all cores).
 3. Dask on a 2-worker LocalCluster (one thread each) against the same partitions solved in this
-   process, rows generated where they are solved, results reduced to a few numbers.
+   process, rows generated where they are solved, results reduced to a few numbers. With
+   `--reuse-partitions` each process generates one partition once and solves it again for every
+   partition, so that neither side's time includes making rows: solving plus Dask's overhead
+   against solving alone.
 
 Run from the repository root after `pip install "./python[dask]"`:
     python python/benchmarks/bench_batch.py [--rows 1000000] [--dask-rows 10000000]
-        [--partition-rows 250000[,1000000,...]]
+        [--partition-rows 250000[,1000000,...]] [--reuse-partitions]
 """
 
 from __future__ import annotations
@@ -124,14 +127,26 @@ def _partition(seed: int, rows: int) -> pd.DataFrame:
     return hertz_rows(rows, seed)
 
 
+def _worker_partition(seed: int, rows: int) -> pd.DataFrame:
+    """One table of `rows` rows per Dask worker, kept on the worker, whatever the seed. (It refers
+    to no module-level data: Dask ships functions of a script by value, with what they refer to.)"""
+    from distributed import get_worker
+
+    store = get_worker().__dict__.setdefault("_halfplane_bench_tables", {})
+    if rows not in store:
+        store[rows] = hertz_rows(rows, 0)
+    return store[rows]
+
+
 def _reduce(out: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame({"rows": [len(out)], "solved": [int((out.error == "").sum())],
                          "stick_left": [float(np.nansum(out.stick_left))]})
 
 
-def dask(n: int, partition_sizes: List[int]) -> None:
+def dask(n: int, partition_sizes: List[int], reuse: bool) -> None:
     """For each partition size: the same partitions generated, solved (all threads) and reduced in
-    a loop in this process, then on the cluster; the two measured back to back."""
+    a loop in this process, then on the cluster; the two measured back to back. With `reuse`, each
+    process's one table is made before the timed runs."""
     import dask.dataframe as dd
     from distributed import Client, LocalCluster
 
@@ -145,17 +160,26 @@ def dask(n: int, partition_sizes: List[int]) -> None:
                       dashboard_address=None) as cluster, Client(cluster) as client:
         warm = dd.from_map(_partition, [0, 1, 2, 3], rows=1000, meta=rows_meta)
         hdask.steady_batch(warm).map_partitions(_reduce, meta=reduced_meta).compute()
-        print(f"Dask, {n:,} Hertz rows (rows generated and reduced where solved), "
-              "wall and CPU of this process:")
+        remote_make = _worker_partition if reuse else _partition
+        print(f"Dask, {n:,} Hertz rows ("
+              + ("one table per process, made before timing" if reuse
+                 else "rows generated and reduced where solved")
+              + "), wall and CPU of this process:")
         for partition_rows in partition_sizes:
             parts = max(1, n // partition_rows)
             seeds = list(range(parts))
+            make: Callable[[int, int], pd.DataFrame] = _partition
+            if reuse:
+                table = hertz_rows(partition_rows, 0)
+                make = lambda _seed, _rows: table  # noqa: E731
+                ddf = dd.from_map(remote_make, seeds, rows=partition_rows, meta=rows_meta)
+                hdask.steady_batch(ddf).map_partitions(_reduce, meta=reduced_meta).compute()
             start, start_cpu = time.perf_counter(), time.process_time()
-            totals = [_reduce(halfplane.steady_batch(_partition(s, partition_rows))) for s in seeds]
+            totals = [_reduce(halfplane.steady_batch(make(s, partition_rows))) for s in seeds]
             local, local_cpu = time.perf_counter() - start, time.process_time() - start_cpu
             local_solved = sum(int(t["solved"].iloc[0]) for t in totals)
             start, start_cpu = time.perf_counter(), time.process_time()
-            ddf = dd.from_map(_partition, seeds, rows=partition_rows, meta=rows_meta)
+            ddf = dd.from_map(remote_make, seeds, rows=partition_rows, meta=rows_meta)
             reduced = hdask.steady_batch(ddf).map_partitions(_reduce, meta=reduced_meta).compute()
             remote, remote_cpu = time.perf_counter() - start, time.process_time() - start_cpu
             solved = int(reduced["solved"].sum())
@@ -175,11 +199,13 @@ def main() -> None:
     parser.add_argument("--partition-rows", default="250000",
                         help="rows per Dask partition; several, comma-separated, are compared")
     parser.add_argument("--skip-dask", action="store_true")
+    parser.add_argument("--reuse-partitions", action="store_true",
+                        help="Dask: one table per process, made before timing (solving only)")
     args = parser.parse_args()
     hertz(args.rows)
     flat(args.flat_rows)
     if not args.skip_dask:
-        dask(args.dask_rows, [int(r) for r in args.partition_rows.split(",")])
+        dask(args.dask_rows, [int(r) for r in args.partition_rows.split(",")], args.reuse_partitions)
 
 
 if __name__ == "__main__":
