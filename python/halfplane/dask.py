@@ -2,10 +2,11 @@
 :func:`halfplane.steady_batch` on a worker.
 
 Dask costs 1-3 ms per task (more on a busy machine), so give each partition at least ~0.1 s of
-work: 2.5 x 10^5 Hertz rows or 10^4 flat-rounded rows per partition or more. Measured on a
-2-worker LocalCluster (one thread each, 10^7 Hertz rows generated and reduced on the workers):
-partitions of 2.5 x 10^5 or 10^6 rows reached the in-process throughput, partitions of 5 x 10^4
-rows 70% of it. Needs the ``dask`` extra: ``pip install "./python[dask]"``.
+work: 2.5 x 10^5 Hertz rows, 4 x 10^4 flat-rounded or 1.5 x 10^4 power-law rows per
+partition or more. Measured on a 2-worker LocalCluster (one thread each, 10^7 Hertz rows):
+partitions of 2.5 x 10^5 or 10^6 rows reached 80-90% of the in-process throughput of solving
+alone, and more than all of it when the rows are also generated on the workers; partitions of
+5 x 10^4 rows 50-76%. Needs the ``dask`` extra: ``pip install "./python[dask]"``.
 """
 
 from __future__ import annotations
