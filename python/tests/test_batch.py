@@ -206,14 +206,16 @@ def test_thread_counts_are_checked(monkeypatch):
 
 
 def test_ctrl_c_interrupts_a_long_batch():
-    # 4e5 flat-rounded rows take tens of seconds; SIGINT after 0.5 s must end the call at the next
-    # chunk boundary (16,384 rows, well under a second) with KeyboardInterrupt.
-    n = 400_000
+    # 1e6 power-law rows (every regime) take seconds on one core in a release build (up to 7 µs
+    # each), far longer in a debug build; SIGINT after 0.5 s must end the call at the next chunk
+    # boundary (16,384 rows, about 0.1 s) with KeyboardInterrupt. (Flat-rounded rows, 3 µs,
+    # would leave too little margin in a release build.)
+    n = 1_000_000
     table = mixed_table(n)
-    table["profile"] = "flat-rounded"
-    table["flat_half_width"] = 0.3
-    table["radius"] = 50.0
-    table[["coefficient", "exponent"]] = NAN
+    table["profile"] = "power-law"
+    table["coefficient"] = 0.01
+    table["exponent"] = 2.5
+    table[["radius", "flat_half_width"]] = NAN
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
     start = time.monotonic()
     timer.start()
