@@ -370,6 +370,7 @@ fn scan(
 
 #[cfg(test)]
 mod tests {
+    use crate::steady::{analyse, Regime, SteadyOptions};
     use crate::{reference, Profile};
 
     #[test]
@@ -423,5 +424,36 @@ mod tests {
         let g = x.iter().map(|x| x.sqrt()).collect();
         let concave = Profile::tabulated(x, g, vec![0.0]).unwrap();
         assert!(!concave.is_convex());
+    }
+
+    #[test]
+    fn a_non_convex_table_is_sampled_and_agrees_with_hertz_inside_its_convex_part() {
+        // g = x^2/100 (Hertz, R = 50) up to x = 1, then a straight line whose slope 0.015 is
+        // below g'(1) = 0.02: not convex, so analyse samples both halves. The reference cycle's
+        // contact (a < 0.8) lies in the Hertz part, where a cubic spline reproduces x^2 exactly,
+        // so the stick zone must be Hertz's closed form to the Newton tolerance (1e-14 relative;
+        // 1e-10 allows for the spline's rounding).
+        let x: Vec<f64> = (0..=40).map(|i| 0.05 * i as f64).collect();
+        let g = x
+            .iter()
+            .map(|&x| {
+                if x <= 1.0 {
+                    x * x / 100.0
+                } else {
+                    0.01 + 0.015 * (x - 1.0)
+                }
+            })
+            .collect();
+        let table = Profile::tabulated(x, g, vec![1.0]).unwrap();
+        assert!(!table.is_convex());
+        let options = SteadyOptions::default();
+        let cycle = reference::cycle();
+        let sampled = analyse(&reference::contact(table), &cycle, &options).unwrap();
+        let hertz = analyse(&reference::hertz(), &cycle, &options).unwrap();
+        assert_eq!(sampled.regime, Regime::PartialSlip);
+        let (s, h) = (sampled.stick_zone.unwrap(), hertz.stick_zone.unwrap());
+        for (a, b) in [(s.left, h.left), (s.right, h.right)] {
+            assert!((a - b).abs() <= 1e-10 * h.half_width(), "{a} vs Hertz {b}");
+        }
     }
 }
