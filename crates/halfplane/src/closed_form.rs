@@ -86,3 +86,105 @@ pub fn cattaneo_mindlin_stick_half_width(
 ) -> f64 {
     half_width * (1.0 - shear.abs() / (friction * normal)).max(0.0).sqrt()
 }
+
+/// The normal contact `[left_end, right_end]` of a tilted flat punch with rounded edges of unequal
+/// radii, in closed form: see [`flat_rounded_tilted`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TiltedContact {
+    /// Normal load P.
+    pub normal: f64,
+    /// Moment M about x = 0 (`integral p x dx`).
+    pub moment: f64,
+    /// Rigid rotation theta (it adds `theta x` to the gap).
+    pub rotation: f64,
+    /// K_N at the left and right ends.
+    pub intensity: [f64; 2],
+}
+
+/// Flat `[-b, b]` with edge radii `R_L` (x < -b) and `R_R` (x > b), contact `[b1, b2]` (either
+/// end may lie on the flat or on an arc): the loads, rotation and edge intensities in closed
+/// form. With `c = (b1 + b2)/2`, `a = (b2 - b1)/2`, `xi = c + a cos(phi)`, the arcs are
+/// `phi < phi_R` (`xi > b`) and `phi > phi_L` (`xi < -b`), where g' is linear in cos(phi), so
+/// `I_j = integral_0^pi g' cos(j phi) dphi` is a sum of `integral cos(n phi) = sin(n phi)/n` and
+/// `A P = a I_1`, `A M = c A P + a^2 I_2/2`, `theta = -I_0/pi` (Johnson, Contact Mechanics, eq.
+/// 2.25a with the consistency condition; the tilted flat-and-rounded punch of Andresen, Hills &
+/// Vázquez, Int. J. Mech. Sci. 2019, closed-form solutions for tilted three-part
+/// piecewise-quadratic half-plane contacts). The intensities are
+/// `K_right = sqrt(2/a)/(pi A) integral [g'(b2) - g'(xi)]/(1 - cos phi) dphi` and
+/// `K_left = sqrt(2/a)/(pi A) integral [g'(xi) - g'(b1)]/(1 + cos phi) dphi`, whose pieces
+/// integrate to `cot(phi/2)` and `tan(phi/2)`. Sign conventions as [`crate::normal_moment`].
+pub fn flat_rounded_tilted(
+    compliance: f64,
+    flat_half_width: f64,
+    radii: (f64, f64),
+    left_end: f64,
+    right_end: f64,
+) -> TiltedContact {
+    let (b, (r_left, r_right)) = (flat_half_width, radii);
+    let (c, a) = (0.5 * (left_end + right_end), 0.5 * (right_end - left_end));
+    let angle = |x: f64| ((x - c) / a).clamp(-1.0, 1.0).acos();
+    let (phi_r, phi_l) = (angle(b), angle(-b));
+    // The arcs: (u, 1/R, from, to) with g' = (u + a cos phi)/R on [from, to].
+    let arcs = [
+        (c - b, 1.0 / r_right, 0.0, phi_r),
+        (c + b, 1.0 / r_left, phi_l, PI),
+    ];
+    let integral_cos = |n: usize, from: f64, to: f64| match n {
+        0 => to - from,
+        _ => ((n as f64 * to).sin() - (n as f64 * from).sin()) / n as f64,
+    };
+    let mut i = [0.0; 3];
+    for &(u, k, from, to) in &arcs {
+        for (j, v) in i.iter_mut().enumerate() {
+            let harmonic = integral_cos(j.abs_diff(1), from, to) + integral_cos(j + 1, from, to);
+            *v += k * (u * integral_cos(j, from, to) + 0.5 * a * harmonic);
+        }
+    }
+    // g' at the ends (phi = 0 and pi): on an arc when it is not empty there, else on the flat.
+    // (Computed as in the loop below, so that the term of the piece holding an end is exactly 0.)
+    let [(u_right, k_right, ..), (u_left, k_left, ..)] = arcs;
+    let slope_right = if phi_r > 0.0 {
+        (u_right + a) * k_right
+    } else if right_end >= -b {
+        0.0
+    } else {
+        (u_left + a) * k_left
+    };
+    let slope_left = if phi_l < PI {
+        (u_left - a) * k_left
+    } else if left_end <= b {
+        0.0
+    } else {
+        (u_right - a) * k_right
+    };
+    let cot = |t: f64| (0.5 * t).cos() / (0.5 * t).sin();
+    let tan = |t: f64| (0.5 * t).tan();
+    // A piece with g' = (u + a cos)/R on [from, to] (k = 1/R; the flat has k = 0):
+    // [g'(b2) - g']/(1 - cos) = (g'(b2) - (u + a) k)/(1 - cos) + a k, and
+    // [g' - g'(b1)]/(1 + cos) = ((u - a) k - g'(b1))/(1 + cos) + a k.
+    let segments = [arcs[0], (0.0, 0.0, phi_r, phi_l), arcs[1]];
+    let (mut right, mut left) = (0.0, 0.0);
+    for &(u, k, from, to) in &segments {
+        if to <= from {
+            continue;
+        }
+        let towards_right = slope_right - (u + a) * k;
+        if towards_right != 0.0 {
+            right += towards_right * (cot(from) - cot(to));
+        }
+        let towards_left = (u - a) * k - slope_left;
+        if towards_left != 0.0 {
+            left += towards_left * (tan(to) - tan(from));
+        }
+        right += a * k * (to - from);
+        left += a * k * (to - from);
+    }
+    let scale = (2.0 / a).sqrt() / (PI * compliance);
+    let normal = a * i[1] / compliance;
+    TiltedContact {
+        normal,
+        moment: c * normal + 0.5 * a * a * i[2] / compliance,
+        rotation: -i[0] / PI,
+        intensity: [scale * left, scale * right],
+    }
+}

@@ -324,6 +324,49 @@ pub enum Error {
         /// The smallest and largest test half-widths tried.
         searched: [f64; 2],
     },
+
+    /// A contact (or zone) would reach beyond a two-sided tabulated profile.
+    #[error(
+        "the {what} needs the profile over [{:.6}, {:.6}], but the table covers [{:.6}, {:.6}]; extend the table",
+        .needed[0], .needed[1], .defined[0], .defined[1]
+    )]
+    OutsideProfile {
+        /// What needed the profile there.
+        what: &'static str,
+        /// The interval `[lo, hi]` that would be needed.
+        needed: [f64; 2],
+        /// The interval the table covers, first and last x.
+        defined: [f64; 2],
+    },
+
+    /// A computation that assumes a symmetric profile (contact `[-a, a]` under P alone) was given
+    /// an asymmetric one (unequal edge radii, a two-sided table), whose contact under P is not
+    /// centred: such profiles are solved with the normal problem under P and a moment
+    /// ([`crate::normal::Contact::normal_contact`]).
+    #[error("the {what} assumes a symmetric profile, but this profile is asymmetric (unequal edge radii or a two-sided table); only the normal problem under P and a moment M accepts it")]
+    AsymmetricProfile {
+        /// The computation that needs symmetry.
+        what: &'static str,
+    },
+
+    /// The moment would put a contact end beyond a tabulated profile at this normal load.
+    #[error(
+        "invalid {field} = {value}: at normal load P = {normal} a contact end would leave the tabulated profile; \
+         the moment must be from {smallest:.6} to {largest:.6} at this P"
+    )]
+    MomentOutsideTable {
+        /// The moment's name (`moment` for the library's normal solve; front ends may name the
+        /// point, for example `cycle.point1.moment`).
+        field: String,
+        /// The rejected moment M.
+        value: f64,
+        /// The normal load P it was given with.
+        normal: f64,
+        /// The smallest valid moment at this P (the left contact end on the table's first row).
+        smallest: f64,
+        /// The largest valid moment at this P (the right contact end on the table's last row).
+        largest: f64,
+    },
 }
 
 impl Error {

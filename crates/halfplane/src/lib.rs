@@ -24,7 +24,8 @@
 //!
 //! Modules, one per concept: [`batch`] (many cases on every core, streamed), [`design`] (grid,
 //! random and Latin-hypercube sweep designs, reproducible row by row), [`profile`] (gap profiles and their integrals), [`normal`] (the
-//! normal problem, [`Contact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
+//! normal problem, [`Contact`]), [`normal_moment`] (the normal problem under P and a moment, any
+//! profile, [`NormalContact`]), [`steady`] (regime and permanent stick zone), [`asymptotic`]
 //! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone
 //! along the cycle), [`slip_map`] (the slip-zone map of the paper's Figure 5), [`record`]
 //! (recorders for the marching solver), [`stress`] (stresses below the contact), [`fatigue`]
@@ -45,6 +46,7 @@ pub mod load;
 pub mod matching;
 pub mod material;
 pub mod normal;
+pub mod normal_moment;
 pub mod profile;
 mod quadrature;
 pub mod record;
@@ -60,6 +62,7 @@ pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};
 pub use load::{Cycle, LoadPoint};
 pub use material::{Compliance, Friction, Material};
 pub use normal::Contact;
+pub use normal_moment::NormalContact;
 pub use profile::{Profile, Shape};
 pub use steady::{analyse, Regime, SteadyOptions, SteadyState, StickZone};
 

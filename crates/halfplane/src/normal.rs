@@ -210,12 +210,27 @@ impl Contact {
         }
         let gx = self.profile.slope(x)?;
         self.profile.slope(a)?;
-        let root = (a * a - x * x).sqrt();
-        if let Some(sum) = self.profile.pressure_integral(a, x) {
-            return Ok((root / (PI * a_comp) * sum).max(0.0));
+        if !self.profile.is_symmetric() {
+            self.profile.slope(-a)?;
         }
-        // integral dt/(a cos t - x) = L(t) with tan(t/2) substitution; L(pi) = 0.
-        let k = ((a - x) / (a + x)).sqrt();
+        let root = (a * a - x * x).sqrt();
+        let sum = self.pressure_kernel(0.0, a, x, gx, root);
+        Ok((root / (PI * a_comp) * sum).max(0.0))
+    }
+
+    /// `integral_0^pi (g'(xi) - g'(x))/(xi - x) dt` with `xi = centre + a cos t`, for x inside the
+    /// contact `[centre - a, centre + a]`, `gx = g'(x)` and `root = sqrt(a^2 - (x - centre)^2)`
+    /// (as the caller computed it): in closed form for piecewise slopes
+    /// ([`Profile`]'s pressure integral), by Gauss-Legendre otherwise (see
+    /// [`Contact::pressure`]). The pressure is `sqrt((x - b1)(b2 - x))/(pi A)` times it, for the
+    /// symmetric contact (`centre = 0`) and the contact under a moment alike.
+    pub(crate) fn pressure_kernel(&self, centre: f64, a: f64, x: f64, gx: f64, root: f64) -> f64 {
+        if let Some(sum) = self.profile.pressure_integral(centre, a, x) {
+            return sum;
+        }
+        let s = x - centre;
+        // integral dt/(a cos t - s) = L(t) with tan(t/2) substitution; L(pi) = 0.
+        let k = ((a - s) / (a + s)).sqrt();
         let log_kernel = |t: f64| {
             if t >= PI {
                 0.0
@@ -223,19 +238,19 @@ impl Contact {
                 pressure_log_term(k, (0.5 * t).tan(), root)
             }
         };
-        let theta_x = (x / a).acos();
+        let theta_x = (s / a).acos();
         let mut cuts = vec![0.0, PI, theta_x];
         cuts.extend(
             self.profile
-                .breaks_within(-a, a)
+                .breaks_within(centre - a, centre + a)
                 .into_iter()
-                .map(|s| (s / a).acos()),
+                .map(|b| ((b - centre) / a).acos()),
         );
         cuts.sort_by(f64::total_cmp);
         let mut sum = 0.0;
         for w in cuts.windows(2) {
             if w[1] > w[0] {
-                let inside = a * (0.5 * (w[0] + w[1])).cos();
+                let inside = centre + a * (0.5 * (w[0] + w[1])).cos();
                 // Next to x the piece is x's own: no continuation (and L is infinite at x).
                 let c = if w[0] == theta_x || w[1] == theta_x {
                     gx
@@ -243,7 +258,13 @@ impl Contact {
                     self.profile.slope_branch(inside, x).unwrap_or(gx)
                 };
                 let [v] = gauss_legendre(w[0], w[1], |t| {
-                    let xi = a * t.cos();
+                    let xi = centre + a * t.cos();
+                    // For x within rounding of a contact end, the window next to it is so
+                    // narrow that a node's xi can round to x: its term (weight ~ the window)
+                    // is then dropped instead of being 0/0.
+                    if xi == x {
+                        return [0.0];
+                    }
                     [(self.profile.slope(xi).unwrap_or(c) - c) / (xi - x)]
                 });
                 sum += v;
@@ -252,7 +273,7 @@ impl Contact {
                 }
             }
         }
-        Ok((root / (PI * a_comp) * sum).max(0.0))
+        sum
     }
 
     /// Normal edge intensity `K_N = (1/pi) sqrt(2/a) dP/da`, with `p ~ K_N sqrt(s)` at distance s

@@ -1,5 +1,10 @@
-//! Symmetric gap profiles g(x) and the integrals of their slope g'(x) that the normal and
-//! tangential problems need.
+//! Gap profiles g(x) and the integrals of their slope g'(x) that the normal and tangential
+//! problems need. Most profiles are symmetric (g' odd); two kinds may be asymmetric: a flat punch
+//! with unequal edge radii ([`Profile::flat_rounded_asymmetric`]) and a tabulated profile whose
+//! rows start at negative x ([`Profile::tabulated`]). Asymmetric profiles are solved only by the
+//! normal problem under P and a moment ([`crate::normal::Contact::normal_contact`], which also
+//! takes symmetric ones); the symmetric routes (`P(a)`, `a(P)`) refuse them with
+//! [`Error::AsymmetricProfile`].
 //!
 //! Everything downstream needs only integrals over a zone `[e - d, e + d]` in the variable
 //! `xi = e + d cos(theta)`, which makes the square-root weights of the paper regular
@@ -21,8 +26,10 @@
 //! Rooms, one stage each: this file holds the shapes, their constructors and the dispatch between
 //! the two routes; `table` validates tabulated profiles and fits their spline pieces; `pieces`
 //! integrates piecewise-polynomial slopes exactly; `power` is the Gauss-Jacobi route of the power
-//! law; `pressure` is the closed-form pressure kernel of piecewise slopes.
+//! law; `pressure` is the closed-form pressure kernel of piecewise slopes; `offset` holds the
+//! integrals of a contact `[c - a, c + a]` centred anywhere (the normal problem with a moment).
 
+mod offset;
 mod pieces;
 mod power;
 mod pressure;
@@ -30,6 +37,7 @@ mod table;
 
 use crate::error::{physical, physical_positive, Error, Result};
 use crate::quadrature::Rule;
+pub(crate) use offset::ContactIntegrals;
 use pieces::{Piece, Pieces};
 use power::PowerSlope;
 pub(crate) use pressure::pressure_log_term;
@@ -44,10 +52,12 @@ pub enum Shape {
         radius: f64,
     },
     /// Flat punch with rounded edges: `g' = 0` for `|x| <= b`, `g' = sign(x)(|x| - b)/R` beyond.
+    /// A pad with unequal edge radii ([`Profile::flat_rounded_asymmetric`]) also reports this
+    /// shape, with its left radius here: [`Profile::edge_radii`] gives both.
     FlatRounded {
         /// Half-width b of the flat.
         flat_half_width: f64,
-        /// Edge radius R.
+        /// Edge radius R (the left one when the radii differ).
         edge_radius: f64,
     },
     /// Power law `g = B|x|^k`, k >= 1.
@@ -57,23 +67,27 @@ pub enum Shape {
         /// k.
         exponent: f64,
     },
-    /// Tabulated `g(x)` for x >= 0, extended symmetrically, interpolated by clamped cubic splines
-    /// split at the stated kinks.
+    /// Tabulated `g(x)`: from x = 0, extended symmetrically; or from a negative x (two-sided,
+    /// used as given). Interpolated by clamped cubic splines split at the stated kinks.
     Tabulated {
-        /// Abscissae, from 0, strictly increasing.
+        /// Abscissae, from 0 or from below 0, strictly increasing.
         x: Vec<f64>,
-        /// Gap values, non-decreasing.
+        /// Gap values: non-decreasing from x = 0; two-sided, non-increasing down to the lowest
+        /// row and non-decreasing after it.
         g: Vec<f64>,
         /// Abscissae (from `x`) where g' may have a corner or a jump.
         kinks: Vec<f64>,
     },
 }
 
-/// A validated symmetric profile, ready for integration.
+/// A validated profile, ready for integration.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Profile {
     shape: Shape,
     slope: Slope,
+    /// The right edge radius of a flat-rounded pad whose radii differ (the left one is in
+    /// `shape`); `None` for every other profile.
+    right_radius: Option<f64>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -106,6 +120,7 @@ impl Profile {
         Ok(Self {
             shape: Shape::Hertz { radius },
             slope: Slope::Pieces(Pieces::whole_line(piece)),
+            right_radius: None,
         })
     }
 
@@ -143,7 +158,79 @@ impl Profile {
                 edge_radius,
             },
             slope: Slope::Pieces(Pieces::symmetric(pieces, &[])),
+            right_radius: None,
         })
+    }
+
+    /// Flat punch with rounded edges of unequal radii: flat `[-b, b]` with
+    /// `b = flat_half_width >= 0`, `g' = (x + b)/R_L` for `x < -b` and `g' = (x - b)/R_R` for `x > b`
+    /// (`R_L = left_radius`, `R_R = right_radius`, both > 0); g' is continuous everywhere and
+    /// only g'' jumps at `x = -b` and `x = b`. Equal radii give exactly
+    /// [`Profile::flat_rounded`]'s symmetric profile. Unequal radii make the profile asymmetric:
+    /// only [`crate::normal::Contact::normal_contact`] solves it.
+    pub fn flat_rounded_asymmetric(
+        flat_half_width: f64,
+        left_radius: f64,
+        right_radius: f64,
+    ) -> Result<Self> {
+        physical_positive("profile.left_radius", left_radius)?;
+        physical_positive("profile.right_radius", right_radius)?;
+        let symmetric = Self::flat_rounded(flat_half_width, left_radius)?;
+        if left_radius == right_radius {
+            return Ok(symmetric);
+        }
+        let b = flat_half_width;
+        let arc = |start: f64, end: f64, origin: f64, radius: f64| Piece {
+            start,
+            end,
+            origin,
+            coeffs: [0.0, 1.0 / radius, 0.0],
+        };
+        let mut pieces = vec![arc(f64::NEG_INFINITY, -b, -b, left_radius)];
+        if b > 0.0 {
+            pieces.push(Piece {
+                start: -b,
+                end: b,
+                origin: 0.0,
+                coeffs: [0.0; 3],
+            });
+        }
+        pieces.push(arc(b, f64::INFINITY, b, right_radius));
+        Ok(Self {
+            shape: symmetric.shape,
+            slope: Slope::Pieces(Pieces::two_sided(pieces, &[])),
+            right_radius: Some(right_radius),
+        })
+    }
+
+    /// The edge radii `(left, right)` of a flat punch with rounded edges (equal for
+    /// [`Profile::flat_rounded`]); `None` for every other kind.
+    pub fn edge_radii(&self) -> Option<(f64, f64)> {
+        match self.shape {
+            Shape::FlatRounded { edge_radius, .. } => {
+                Some((edge_radius, self.right_radius.unwrap_or(edge_radius)))
+            }
+            _ => None,
+        }
+    }
+
+    /// Whether g is symmetric (g' odd): every profile except a flat punch with unequal edge radii
+    /// and a two-sided table. The symmetric contact law, its inverse and everything built on them
+    /// (steady state, marching) need a symmetric profile.
+    pub fn is_symmetric(&self) -> bool {
+        match &self.slope {
+            Slope::Pieces(p) => p.odd,
+            Slope::Power(_) => true,
+        }
+    }
+
+    /// The interval `[lower, upper]` where the profile is defined: `[-extent, extent]` for a
+    /// symmetric profile ([`Profile::extent`]), the first and last rows of a two-sided table.
+    pub fn bounds(&self) -> (f64, f64) {
+        match &self.slope {
+            Slope::Pieces(p) => p.bounds,
+            Slope::Power(_) => (f64::NEG_INFINITY, f64::INFINITY),
+        }
     }
 
     /// Power law `g = coefficient |x|^exponent` with coefficient > 0 and exponent >= 1.
@@ -169,6 +256,7 @@ impl Profile {
                 exponent,
                 rule,
             }),
+            right_radius: None,
         })
     }
 
@@ -189,7 +277,8 @@ impl Profile {
         }
     }
 
-    /// Largest |x| where the profile is defined (infinite for analytic profiles).
+    /// Largest |x| where the profile is defined (infinite for analytic profiles); for a two-sided
+    /// table the larger of |first x| and last x (see [`Profile::bounds`]).
     pub fn extent(&self) -> f64 {
         match &self.slope {
             Slope::Pieces(p) => p.extent,
@@ -198,14 +287,15 @@ impl Profile {
     }
 
     /// Points x >= 0 where g' is not smooth (g'' jumps, or g' itself jumps); the profile is
-    /// symmetric, so -x is one too.
+    /// symmetric, so -x is one too. For a flat-rounded pad with unequal radii the same (b, or 0
+    /// when the flat has no width); for a two-sided table its kinks as given, with their signs.
     pub fn kinks(&self) -> Vec<f64> {
         match &self.shape {
             Shape::Hertz { .. } => vec![],
             Shape::FlatRounded {
                 flat_half_width, ..
             } => {
-                if *flat_half_width > 0.0 {
+                if *flat_half_width > 0.0 || self.right_radius.is_some() {
                     vec![*flat_half_width]
                 } else {
                     vec![]
@@ -223,11 +313,12 @@ impl Profile {
         }
     }
 
-    /// Profile slope `g'(x)` (odd in x). Errors beyond a tabulated profile's last row.
+    /// Profile slope `g'(x)` (odd in x for a symmetric profile). Errors beyond a tabulated
+    /// profile's rows.
     pub fn slope(&self, x: f64) -> Result<f64> {
         match &self.slope {
             Slope::Pieces(p) => {
-                p.check_extent("profile evaluation", x.abs())?;
+                p.check_span("profile evaluation", x, x)?;
                 Ok(p.slope(x))
             }
             Slope::Power(p) => Ok(p.slope(x)),

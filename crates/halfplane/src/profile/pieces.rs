@@ -59,13 +59,21 @@ impl PartialEq for PieceList {
     }
 }
 
-/// g' as contiguous polynomial pieces over `[-extent, extent]`, with the jumps of g' at breaks.
+/// g' as contiguous polynomial pieces over `[-extent, extent]` (odd slopes) or `[lower, upper]`
+/// (two-sided), with the jumps of g' at breaks.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Pieces {
     pub(super) pieces: PieceList,
     /// `(x, g'(x+) - g'(x-))` for the breaks where g' jumps, over the whole line.
     pub(super) jumps: Vec<(f64, f64)>,
+    /// The largest |x| where g' is defined on both sides (odd slopes); for a two-sided slope the
+    /// larger of |lower| and upper.
     pub(super) extent: f64,
+    /// `[lower, upper]`: where g' is defined (`[-extent, extent]` for odd slopes).
+    pub(super) bounds: (f64, f64),
+    /// Whether g' is odd (built by [`Pieces::symmetric`] or [`Pieces::whole_line`]): only then
+    /// do the symmetric contact law's half-line integrals hold.
+    pub(super) odd: bool,
     /// `(a, J1(a, 0))` at piece boundaries a > 0 of a finite table (all of a small table, a
     /// geometric selection of a large one, always the last): brackets the contact law's inverse.
     pub(super) knot_moments: Vec<(f64, f64)>,
@@ -119,6 +127,40 @@ impl Pieces {
             pieces: PieceList::Many(pieces),
             jumps,
             extent,
+            bounds: (-extent, extent),
+            odd: true,
+            knot_moments: Vec::new(),
+            convex,
+        }
+    }
+
+    /// Builds a slope from contiguous pieces over the whole range they cover, with no symmetry
+    /// (two-sided tables, flat-rounded pads with unequal radii). `breaks` (sorted) are the x
+    /// where g' may jump.
+    pub(super) fn two_sided(pieces: Vec<Piece>, breaks: &[f64]) -> Self {
+        let lower = pieces.first().map_or(0.0, |p| p.start);
+        let upper = pieces.last().map_or(0.0, |p| p.end);
+        let scale = pieces
+            .iter()
+            .map(|p| {
+                let at = |x: f64| if x.is_finite() { p.eval(x).abs() } else { 0.0 };
+                at(p.start).max(at(p.end))
+            })
+            .fold(0.0, f64::max);
+        let jumps = pieces
+            .windows(2)
+            .map(|w| (w[0].end, w[1].eval(w[0].end) - w[0].eval(w[0].end)))
+            .filter(|&(x, jump)| {
+                breaks.binary_search_by(|b| b.total_cmp(&x)).is_ok() && jump.abs() > 1e-13 * scale
+            })
+            .collect();
+        let convex = Self::slope_never_falls(&pieces, scale);
+        Self {
+            pieces: PieceList::Many(pieces),
+            jumps,
+            extent: lower.abs().max(upper.abs()),
+            bounds: (lower, upper),
+            odd: false,
             knot_moments: Vec::new(),
             convex,
         }
@@ -159,6 +201,8 @@ impl Pieces {
             pieces: PieceList::One([whole]),
             jumps: Vec::new(),
             extent: piece.end,
+            bounds: (-piece.end, piece.end),
+            odd: true,
             knot_moments: Vec::new(),
             convex: Self::slope_never_falls(&[whole], 0.0),
         }
@@ -170,6 +214,24 @@ impl Pieces {
                 what,
                 needed,
                 table_end: self.extent,
+            })
+        } else {
+            Ok(())
+        }
+    }
+
+    /// [`Pieces::check_extent`] for the interval `[lo, hi]`: odd slopes check `max(|lo|, |hi|)`
+    /// against the extent (the historical message), two-sided ones check both bounds.
+    pub(super) fn check_span(&self, what: &'static str, lo: f64, hi: f64) -> Result<()> {
+        if self.odd {
+            return self.check_extent(what, lo.abs().max(hi.abs()));
+        }
+        let (lower, upper) = self.bounds;
+        if lo < lower || hi > upper {
+            Err(Error::OutsideProfile {
+                what,
+                needed: [lo, hi],
+                defined: [lower, upper],
             })
         } else {
             Ok(())
@@ -194,6 +256,11 @@ impl Pieces {
 
     /// `J1(a, 0)` and `dJ1/da` from the x >= 0 half alone (the integrand is even there).
     pub(super) fn symmetric_moment(&self, a: f64) -> Result<(f64, f64)> {
+        if !self.odd {
+            return Err(Error::AsymmetricProfile {
+                what: "symmetric contact law P(a)",
+            });
+        }
         let s = self.integrals_over::<false>(a, 0.0, true)?;
         Ok((2.0 * s.j1, 2.0 * s.j1_d))
     }
@@ -207,7 +274,7 @@ impl Pieces {
         from_centre: bool,
     ) -> Result<StickIntegrals> {
         let (lo, hi) = (e - d, e + d);
-        self.check_extent("contact or stick zone", lo.abs().max(hi.abs()))?;
+        self.check_span("contact or stick zone", lo, hi)?;
         // cos, sin and theta of the point xi, computed from distances to the zone ends so that
         // theta stays accurate near 0 and pi.
         let angle = |x: f64| {

@@ -55,6 +55,39 @@ impl PowerSlope {
         (j0, j1)
     }
 
+    /// `integral_0^pi g'(e + d cos t) [1, cos t, cos 2t] dt` (the `I_j` of a contact centred at
+    /// e, see `offset`), by the same split at x = 0 and Gauss-Jacobi rule as [`PowerSlope::values`].
+    pub(super) fn weighted(&self, d: f64, e: f64) -> [f64; 3] {
+        let (b, k) = (self.coefficient, self.exponent);
+        let harmonics = |t: f64| {
+            let c = t.cos();
+            [1.0, c, 2.0 * c * c - 1.0]
+        };
+        if e.abs() >= d {
+            return gauss_legendre(0.0, PI, |t| {
+                let s = self.slope(e + d * t.cos());
+                harmonics(t).map(|w| s * w)
+            });
+        }
+        let theta0 = ((d - e) * (d + e)).sqrt().atan2(-e);
+        let mut out = [0.0; 3];
+        for (length, sign) in [(theta0, 1.0), (PI - theta0, -1.0)] {
+            let mut sum = [0.0; 3];
+            for (t, w) in self.rule.nodes.iter().zip(&self.rule.weights) {
+                let theta = theta0 - sign * length * t;
+                let r = (e + d * theta.cos()).abs() / (length * t);
+                let rk1 = r.powf(k - 1.0);
+                for (s, h) in sum.iter_mut().zip(harmonics(theta)) {
+                    *s += w * rk1 * h;
+                }
+            }
+            for (o, s) in out.iter_mut().zip(sum) {
+                *o += sign * b * k * length.powf(k) * s;
+            }
+        }
+        out
+    }
+
     /// `J1(a, 0)` and `dJ1/da` in closed form: `integral_0^pi |cos t|^k dt = 2 W_k`, with `W_k`
     /// the Wallis integral ([`closed_form::wallis_integral`]).
     pub(super) fn symmetric_moment(&self, a: f64) -> (f64, f64) {

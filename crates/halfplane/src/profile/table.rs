@@ -25,7 +25,13 @@ impl Profile {
     /// Tabulated profile: `x` from 0, strictly increasing; `g` finite and non-decreasing; `kinks`
     /// a subset of `x` where the interpolant may have a corner or jump in g' (0 allowed: then
     /// g'(0+) is fitted from the data instead of set to 0 by symmetry). At least 3 rows and at
-    /// most [`MAX_TABLE_ROWS`].
+    /// most [`MAX_TABLE_ROWS`]. Such a table is mirrored: g(-x) = g(x).
+    ///
+    /// A table whose first x is negative is **two-sided**: it must extend beyond x = 0 (last
+    /// x > 0), `g` must fall (non-increasing) down to its lowest row and rise (non-decreasing)
+    /// after it, and it is used as given, with no mirroring: an asymmetric profile, solved only
+    /// by the normal problem under P and a moment. Both end slopes of its splines are fitted
+    /// from the data, and its kinks may be any rows but the last, of either sign.
     ///
     /// Setup takes time linear in the rows (about 0.2 s for 1,000,000 rows, BENCHMARKS.md).
     pub fn tabulated(x: Vec<f64>, g: Vec<f64>, kinks: Vec<f64>) -> Result<Self> {
@@ -59,11 +65,15 @@ impl Profile {
                 ));
             }
         }
+        if x[0] < 0.0 {
+            return Self::two_sided(x, g, kinks);
+        }
         if x[0] != 0.0 {
             return Err(table(
                 1,
                 format!(
-                    "x = {}: the first row must be at x = 0 (the profile's centre)",
+                    "x = {}: the first row must be at x = 0 (the profile's centre; the table is mirrored) \
+                     or below 0 (a two-sided table, used as given)",
                     x[0]
                 ),
             ));
@@ -90,59 +100,9 @@ impl Profile {
                 ));
             }
         }
-        let mut kinks = kinks;
-        kinks.sort_by(f64::total_cmp);
-        kinks.dedup();
-        let mut cuts = vec![0usize];
-        for k in kinks.iter_mut() {
-            let k_given = *k;
-            // Kinks are matched to a row within 1e-9 of the table's length (decimal inputs such
-            // as 0.3 need not be bit-equal to a computed abscissa).
-            // x is increasing: the first row within tol is found by bisection, O(log n) per kink.
-            let tol = 1e-9 * x[x.len() - 1];
-            let first = x.partition_point(|&xi| xi < k_given - tol);
-            let within = x.get(first).filter(|&&xi| (xi - k_given).abs() <= tol);
-            match within.map(|_| first) {
-                Some(i) if i + 1 < x.len() => {
-                    *k = x[i];
-                    if i > 0 {
-                        cuts.push(i);
-                    }
-                }
-                _ => {
-                    return Err(Error::InvalidInput {
-                        field: "profile.kinks".into(),
-                        value: k_given,
-                        valid: "one of the tabulated x values, below the last one",
-                    })
-                }
-            }
-        }
-        // Two kinks given within the tolerance of one row are one kink (a repeated cut would
-        // leave a one-point segment, which has no spline).
-        kinks.dedup();
-        cuts.dedup();
-        cuts.push(x.len() - 1);
+        let (kinks, cuts) = kink_rows(&x, kinks)?;
         let kink_at_centre = kinks.first() == Some(&0.0);
-        let mut pieces = Vec::new();
-        for (s, w) in cuts.windows(2).enumerate() {
-            let (xs, gs) = (&x[w[0]..=w[1]], &g[w[0]..=w[1]]);
-            // The end slope uses the last four points only: copying the whole segment reversed
-            // would cost O(rows) per segment.
-            let rev = |v: &[f64]| v.iter().rev().take(4).copied().collect::<Vec<_>>();
-            let s0 = if s == 0 && !kink_at_centre {
-                0.0
-            } else {
-                spline::end_slope(xs, gs)
-            };
-            let s1 = spline::end_slope(&rev(xs), &rev(gs));
-            pieces.extend(spline::clamped(xs, gs, s0, s1).into_iter().map(|iv| Piece {
-                start: iv.x0,
-                end: iv.x1,
-                origin: iv.x0,
-                coeffs: iv.slope,
-            }));
-        }
+        let pieces = spline_pieces(&x, &g, &cuts, !kink_at_centre);
         let mut breaks: Vec<f64> = kinks.clone();
         breaks.retain(|&k| k > 0.0);
         let mut slope = Pieces::symmetric(pieces, &breaks);
@@ -173,8 +133,124 @@ impl Profile {
         Ok(Self {
             shape: Shape::Tabulated { x, g, kinks },
             slope: Slope::Pieces(slope),
+            right_radius: None,
         })
     }
+
+    /// The two-sided table of [`Profile::tabulated`] (first x < 0), its rows already checked to
+    /// be finite and as many in x as in g: x strictly increasing to beyond 0, g falling to its
+    /// lowest row and rising after it.
+    fn two_sided(x: Vec<f64>, g: Vec<f64>, kinks: Vec<f64>) -> Result<Self> {
+        let table = |row: usize, problem: String| Error::InvalidTable { row, problem };
+        let n = x.len();
+        if x[n - 1] <= 0.0 {
+            return Err(table(
+                n,
+                format!(
+                    "x = {}: a table starting below 0 (two-sided) must extend beyond x = 0",
+                    x[n - 1]
+                ),
+            ));
+        }
+        let lowest = (0..n).fold(0, |best, i| if g[i] < g[best] { i } else { best });
+        for i in 1..n {
+            if x[i] <= x[i - 1] {
+                return Err(table(
+                    i + 1,
+                    format!(
+                        "x = {} does not exceed the previous x = {}: x must be strictly increasing",
+                        x[i],
+                        x[i - 1]
+                    ),
+                ));
+            }
+            let (falls, rises) = (g[i] < g[i - 1], g[i] > g[i - 1]);
+            if (i <= lowest && rises) || (i > lowest && falls) {
+                return Err(table(
+                    i + 1,
+                    format!(
+                        "g = {} after g = {}: a two-sided table's g must fall to its lowest value \
+                         (row {}) and rise after it",
+                        g[i],
+                        g[i - 1],
+                        lowest + 1
+                    ),
+                ));
+            }
+        }
+        let (kinks, cuts) = kink_rows(&x, kinks)?;
+        let pieces = spline_pieces(&x, &g, &cuts, false);
+        let slope = Pieces::two_sided(pieces, &kinks);
+        Ok(Self {
+            shape: Shape::Tabulated { x, g, kinks },
+            slope: Slope::Pieces(slope),
+            right_radius: None,
+        })
+    }
+}
+
+/// The kinks matched to rows (sorted, one per row) and the row indices where the table is cut
+/// into spline segments (the first row, each kink row but the first, the last row).
+fn kink_rows(x: &[f64], mut kinks: Vec<f64>) -> Result<(Vec<f64>, Vec<usize>)> {
+    kinks.sort_by(f64::total_cmp);
+    kinks.dedup();
+    let mut cuts = vec![0usize];
+    // Kinks are matched to a row within 1e-9 of the table's length (decimal inputs such as 0.3
+    // need not be bit-equal to a computed abscissa); a one-sided table's length is its last x.
+    let tol = 1e-9 * x[x.len() - 1].max(-x[0]);
+    for k in kinks.iter_mut() {
+        let k_given = *k;
+        // x is increasing: the first row within tol is found by bisection, O(log n) per kink.
+        let first = x.partition_point(|&xi| xi < k_given - tol);
+        let within = x.get(first).filter(|&&xi| (xi - k_given).abs() <= tol);
+        match within.map(|_| first) {
+            Some(i) if i + 1 < x.len() => {
+                *k = x[i];
+                if i > 0 {
+                    cuts.push(i);
+                }
+            }
+            _ => {
+                return Err(Error::InvalidInput {
+                    field: "profile.kinks".into(),
+                    value: k_given,
+                    valid: "one of the tabulated x values, below the last one",
+                })
+            }
+        }
+    }
+    // Two kinks given within the tolerance of one row are one kink (a repeated cut would leave a
+    // one-point segment, which has no spline).
+    kinks.dedup();
+    cuts.dedup();
+    cuts.push(x.len() - 1);
+    Ok((kinks, cuts))
+}
+
+/// The clamped cubic splines of the segments between consecutive `cuts`, as slope pieces. The
+/// first segment's start slope is 0 (the mirrored table's centre) when `flat_start`, otherwise
+/// fitted from the data like every other end.
+fn spline_pieces(x: &[f64], g: &[f64], cuts: &[usize], flat_start: bool) -> Vec<Piece> {
+    let mut pieces = Vec::new();
+    for (s, w) in cuts.windows(2).enumerate() {
+        let (xs, gs) = (&x[w[0]..=w[1]], &g[w[0]..=w[1]]);
+        // The end slope uses the last four points only: copying the whole segment reversed
+        // would cost O(rows) per segment.
+        let rev = |v: &[f64]| v.iter().rev().take(4).copied().collect::<Vec<_>>();
+        let s0 = if s == 0 && flat_start {
+            0.0
+        } else {
+            spline::end_slope(xs, gs)
+        };
+        let s1 = spline::end_slope(&rev(xs), &rev(gs));
+        pieces.extend(spline::clamped(xs, gs, s0, s1).into_iter().map(|iv| Piece {
+            start: iv.x0,
+            end: iv.x1,
+            origin: iv.x0,
+            coeffs: iv.slope,
+        }));
+    }
+    pieces
 }
 
 #[cfg(test)]

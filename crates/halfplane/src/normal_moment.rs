@@ -1,0 +1,454 @@
+//! The normal problem under a normal load P and a moment M, for any profile (symmetric or not):
+//! contact ends `b1 < b2`, pressure, edge intensities K_N at both ends and the pad's rotation.
+//!
+//! Conventions (docs/theory.md, "Normal contact under a moment"): P > 0 compresses; the moment
+//! is taken about x = 0 of the profile's coordinate, `M = integral p(x) x dx`, so the pressure
+//! centroid sits at `x = M/P` (M > 0 moves the contact towards +x). The pad is free to rotate
+//! rigidly: the relative gap is `h(x) = g(x) + theta x + const`, so a negative rotation theta
+//! closes the gap on the +x side. The contact `[b1, b2]` has centre `c = (b1 + b2)/2` and
+//! half-width `a = (b2 - b1)/2`, `xi = c + a cos(phi)`.
+//!
+//! The pressure bounded at both ends of the singular integral equation
+//! `(1/pi) PV integral p(xi)/(x - xi) dxi = h'(x)/A` (Johnson, Contact Mechanics, eq. 2.25a,
+//! summed over two elastically similar bodies; Barber, Elasticity, ch. 12) exists only when
+//! the consistency condition `integral_0^pi h'(xi) dphi = 0` holds, which fixes the rotation:
+//! `theta = -I_0/pi` with `I_j = integral_0^pi g'(xi) cos(j phi) dphi`. Its resultants are then
+//! `A P = a I_1` and `A M = c A P + a^2 I_2/2` (theta drops out of both), and
+//! `p(x) = sqrt((x - b1)(b2 - x))/(pi A) integral_0^pi (g'(xi) - g'(x))/(xi - x) dphi`. These
+//! are the two conditions for the two unknown ends. Andresen, Hills & Vázquez (Closed-form
+//! solutions for tilted three-part piecewise-quadratic half-plane contacts, Int. J. Mech. Sci.
+//! 2019) solve the same problem in closed form for piecewise-quadratic profiles (the tilted
+//! flat-and-rounded punch among them); [`crate::closed_form::flat_rounded_tilted`] evaluates
+//! the integrals above in closed form for that punch and checks this module in the tests.
+
+use crate::error::{physical, physical_positive, Error, Result};
+use crate::labels::{Edge, PerEdge};
+use crate::normal::Contact;
+use crate::profile::{ContactIntegrals, Shape};
+use std::f64::consts::PI;
+
+/// The solved normal contact under P and M. Built only by [`Contact::normal_contact`], so its
+/// ends, rotation and intensities always belong to its loads.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NormalContact {
+    normal: f64,
+    moment: f64,
+    ends: PerEdge<f64>,
+    rotation: f64,
+    intensity: PerEdge<f64>,
+    on_flat: PerEdge<bool>,
+}
+
+impl NormalContact {
+    /// The normal load P.
+    pub fn normal(&self) -> f64 {
+        self.normal
+    }
+
+    /// The moment M about x = 0.
+    pub fn moment(&self) -> f64 {
+        self.moment
+    }
+
+    /// The pressure centroid `M/P`.
+    pub fn centroid(&self) -> f64 {
+        self.moment / self.normal
+    }
+
+    /// The contact end at `edge`, as a signed x: `b1` (left) or `b2` (right).
+    pub fn end(&self, edge: Edge) -> f64 {
+        self.ends[edge]
+    }
+
+    /// Both ends, `b1` and `b2`.
+    pub fn ends(&self) -> PerEdge<f64> {
+        self.ends
+    }
+
+    /// The centre `c = (b1 + b2)/2`.
+    pub fn centre(&self) -> f64 {
+        0.5 * (self.ends.left + self.ends.right)
+    }
+
+    /// The half-width `a = (b2 - b1)/2`.
+    pub fn half_width(&self) -> f64 {
+        0.5 * (self.ends.right - self.ends.left)
+    }
+
+    /// The rigid rotation theta of the pad (radians, small): it adds `theta x` to the gap, so it
+    /// is negative when the pad tilts down towards +x. Hertz: `-M/(P R)`.
+    pub fn rotation(&self) -> f64 {
+        self.rotation
+    }
+
+    /// The edge intensity K_N at `edge`: `p ~ K_N sqrt(s)` at distance s inside that end.
+    pub fn normal_intensity(&self, edge: Edge) -> f64 {
+        self.intensity[edge]
+    }
+
+    /// K_N at both ends.
+    pub fn normal_intensities(&self) -> PerEdge<f64> {
+        self.intensity
+    }
+
+    /// For a flat punch with rounded edges: whether each end lies on the flat (`|b| <= b_flat`),
+    /// a regime where the pressure there is flat-punch-like although g' stays continuous (the
+    /// solution is valid; only g'' jumps where the end crosses the flat's edge). False for every
+    /// other profile.
+    pub fn end_on_flat(&self) -> PerEdge<bool> {
+        self.on_flat
+    }
+}
+
+/// `A P`, `A M`, their partial derivatives in c and a, and `I_0`, at one contact `(c, a)`.
+#[derive(Debug, Clone, Copy)]
+struct Resultants {
+    load: f64,
+    moment: f64,
+    load_c: f64,
+    load_a: f64,
+    moment_c: f64,
+    moment_a: f64,
+    i0: f64,
+}
+
+impl Resultants {
+    /// `A P = a I_1`, `A M = c a I_1 + a^2 I_2 / 2` and their derivatives (module docs).
+    fn new(c: f64, a: f64, s: &ContactIntegrals) -> Self {
+        let [i0, i1, i2] = s.i;
+        let load = a * i1;
+        let load_a = i1 + a * s.i_a[1];
+        let load_c = a * s.i_c[1];
+        Self {
+            load,
+            moment: c * load + 0.5 * a * a * i2,
+            load_c,
+            load_a,
+            moment_c: load + c * load_c + 0.5 * a * a * s.i_c[2],
+            moment_a: c * load_a + a * i2 + 0.5 * a * a * s.i_a[2],
+            i0,
+        }
+    }
+}
+
+/// Where the inner solve at a fixed centre ended.
+enum Fixed {
+    Solved(f64, Resultants),
+    /// No contact with this centre carries P inside the table.
+    Beyond,
+}
+
+impl Contact {
+    /// `(P, M)` carried by the contact `[left, right]` (`left < right`): the forward problem,
+    /// `A P = a I_1`, `A M = c A P + a^2 I_2/2` (module docs; Johnson, Contact Mechanics, eq.
+    /// 2.25a). Errors where the contact leaves a tabulated profile.
+    pub fn load_and_moment(&self, left: f64, right: f64) -> Result<(f64, f64)> {
+        physical("contact end b1", left)?;
+        physical("contact end b2", right)?;
+        if right <= left {
+            return Err(Error::InvalidInput {
+                field: "contact end b2".into(),
+                value: right,
+                valid: "a contact end greater than b1",
+            });
+        }
+        let r = self.resultants(0.5 * (left + right), 0.5 * (right - left))?;
+        let a_comp = self.compliance().value();
+        Ok((r.load / a_comp, r.moment / a_comp))
+    }
+
+    /// The normal contact under normal load `normal` (P > 0) and moment `moment` (M about x = 0,
+    /// any sign): ends, rotation and K_N at both ends (module docs for the conventions).
+    ///
+    /// Solved as two nested bracketed Newton iterations, using that for a convex profile
+    /// (non-negative K_N at both ends of every contact) P grows with either end moving outwards and, along a
+    /// curve of constant P (both ends moving the same way), M grows with the centre c: the inner
+    /// iteration finds the half-width a(c) carrying P at a fixed centre (P increases with a), the
+    /// outer one the centre where M(c, a(c)) = M, with the exact derivative
+    /// `dM/dc = M_c - M_a P_c/P_a`. Each keeps a bracket and bisects whenever Newton would leave
+    /// it; both stop at a relative step of 1e-15. The first centre tried is the centroid M/P
+    /// (exact for Hertz). On a tabulated profile, a centre whose contact cannot carry P inside
+    /// the table brackets the root from that side; if M lies beyond the moment carried with an
+    /// end on the table's first or last row, the error [`Error::MomentOutsideTable`] gives the
+    /// valid range at this P. Errors too when the contact found has a negative K_N at an end (a
+    /// non-convex profile whose pressure would be negative there).
+    pub fn normal_contact(&self, normal: f64, moment: f64) -> Result<NormalContact> {
+        physical_positive("normal load", normal)?;
+        physical("moment", moment)?;
+        let a_comp = self.compliance().value();
+        let (target_p, target_m) = (a_comp * normal, a_comp * moment);
+        let (c, a, r) = self.solve_centre(normal, moment, target_p, target_m)?;
+        let scale = (2.0 / a).sqrt() / (PI * a_comp);
+        let intensity = PerEdge {
+            left: scale * (r.load_a - r.load_c),
+            right: scale * (r.load_a + r.load_c),
+        };
+        let floor = -1e-9 * intensity.left.abs().max(intensity.right.abs());
+        if intensity.left < floor || intensity.right < floor {
+            return Err(Error::InvalidInput {
+                field: "moment".into(),
+                value: moment,
+                valid: "a moment whose contact has a non-negative pressure intensity K_N at both ends (the profile is not convex there)",
+            });
+        }
+        let ends = PerEdge {
+            left: c - a,
+            right: c + a,
+        };
+        let on_flat = match self.profile.shape() {
+            Shape::FlatRounded {
+                flat_half_width, ..
+            } => PerEdge::from_fn(|e| ends[e].abs() <= *flat_half_width),
+            _ => PerEdge {
+                left: false,
+                right: false,
+            },
+        };
+        Ok(NormalContact {
+            normal,
+            moment,
+            ends,
+            rotation: -r.i0 / PI,
+            intensity: PerEdge {
+                left: intensity.left.max(0.0),
+                right: intensity.right.max(0.0),
+            },
+            on_flat,
+        })
+    }
+
+    /// The contact pressure of `state` at `x` (zero outside `[b1, b2]`):
+    /// `p(x) = sqrt((x - b1)(b2 - x))/(pi A) integral_0^pi (g'(xi) - g'(x))/(xi - x) dphi`, the
+    /// same kernel and routes as [`Contact::pressure`] about the centre c.
+    pub fn pressure_in(&self, state: &NormalContact, x: f64) -> Result<f64> {
+        crate::error::finite("position x", x)?;
+        let PerEdge { left, right } = state.ends;
+        if x <= left || x >= right {
+            return Ok(0.0);
+        }
+        let (c, a) = (state.centre(), state.half_width());
+        let root = ((x - left) * (right - x)).sqrt();
+        if root == 0.0 || (x - c).abs() >= a {
+            // Within rounding of an end, where the pressure vanishes.
+            return Ok(0.0);
+        }
+        let gx = self.profile.slope(x)?;
+        let sum = self.pressure_kernel(c, a, x, gx, root);
+        let p = root / (PI * self.compliance().value()) * sum;
+        if p.is_finite() {
+            Ok(p.max(0.0))
+        } else {
+            Err(Error::InvalidInput {
+                field: "position x".into(),
+                value: x,
+                valid: "a position whose pressure is finite for this contact (the scales overflow)",
+            })
+        }
+    }
+
+    fn resultants(&self, c: f64, a: f64) -> Result<Resultants> {
+        Ok(Resultants::new(
+            c,
+            a,
+            &self.profile.contact_integrals(c, a)?,
+        ))
+    }
+
+    /// The outer iteration on the centre (see [`Contact::normal_contact`]).
+    fn solve_centre(
+        &self,
+        normal: f64,
+        moment: f64,
+        target_p: f64,
+        target_m: f64,
+    ) -> Result<(f64, f64, Resultants)> {
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        let mut c = moment / normal;
+        let mut a = self.first_half_width(normal);
+        let mut limits: Option<[(f64, f64); 2]> = None;
+        for _ in 0..200 {
+            let step = match self.half_width_at(c, a, target_p)? {
+                Fixed::Solved(found, r) => {
+                    a = found;
+                    let residual = r.moment - target_m;
+                    if residual > 0.0 {
+                        hi = c;
+                    } else {
+                        lo = c;
+                    }
+                    let slope = r.moment_c - r.moment_a * r.load_c / r.load_a;
+                    let newton = c - residual / slope;
+                    if (newton - c).abs() <= 1e-15 * (a + c.abs()) || residual == 0.0 {
+                        return Ok((c, a, r));
+                    }
+                    if newton > lo && newton < hi {
+                        newton - c
+                    } else if lo.is_finite() && hi.is_finite() {
+                        0.5 * (lo + hi) - c
+                    } else {
+                        // Newton left an open bracket: move by one half-width towards the root.
+                        -a * residual.signum()
+                    }
+                }
+                Fixed::Beyond => {
+                    // The contact reaches the table's end first: bound the centre by the contact
+                    // with that end on the last (first) row, once M is known to be inside.
+                    let [low, high] = match limits {
+                        Some(l) => l,
+                        None => {
+                            let l = self.table_limits(target_p)?;
+                            let a_comp = self.compliance().value();
+                            let (smallest, largest) = (l[0].1 / a_comp, l[1].1 / a_comp);
+                            if !(smallest..=largest).contains(&moment) {
+                                return Err(Error::MomentOutsideTable {
+                                    field: "moment".into(),
+                                    value: moment,
+                                    normal,
+                                    smallest,
+                                    largest,
+                                });
+                            }
+                            limits = Some(l);
+                            l
+                        }
+                    };
+                    // Whichever side this centre was beyond, the root lies between the two
+                    // pinned contacts' centres (M is inside their moments).
+                    lo = lo.max(low.0);
+                    hi = hi.min(high.0);
+                    0.5 * (lo + hi) - c
+                }
+            };
+            if hi - lo <= 1e-15 * (a + c.abs()) {
+                let r = self.resultants(c, a)?;
+                return Ok((c, a, r));
+            }
+            c += step;
+        }
+        Err(Error::NoConvergence {
+            what: "contact centre under a moment",
+            iterations: 200,
+            last_step: (hi - lo) / a,
+        })
+    }
+
+    /// A first half-width: the symmetric closed forms where they exist, the flat plus Hertz's
+    /// half-width on the sharper edge radius for a flat-rounded pad (an upper bound of the
+    /// symmetric one), and 0 (meaning: half the room) for a table.
+    fn first_half_width(&self, normal: f64) -> f64 {
+        let a_comp = self.compliance().value();
+        let hertz = |r: f64| crate::closed_form::hertz_half_width(a_comp, r, normal);
+        match self.profile.shape() {
+            Shape::Hertz { radius } => hertz(*radius),
+            Shape::PowerLaw {
+                coefficient,
+                exponent,
+            } => crate::closed_form::power_law_half_width(a_comp, *coefficient, *exponent, normal),
+            Shape::FlatRounded {
+                flat_half_width, ..
+            } => {
+                let (left, right) = self.profile.edge_radii().unwrap_or((1.0, 1.0));
+                flat_half_width + hertz(left.min(right))
+            }
+            Shape::Tabulated { .. } => 0.0,
+        }
+    }
+
+    /// The inner iteration: the half-width whose contact centred at `c` carries `A P =
+    /// target_p`, from the guess `a` (0: half the room on a table), or the side the centre is
+    /// `Beyond` when no contact inside a table carries it.
+    fn half_width_at(&self, c: f64, a: f64, target_p: f64) -> Result<Fixed> {
+        let (lower, upper) = self.profile.bounds();
+        let room = (c - lower).min(upper - c);
+        if room <= 0.0 {
+            return Ok(Fixed::Beyond);
+        }
+        let (mut lo, mut hi) = (0.0, f64::INFINITY);
+        if room.is_finite() {
+            let r = self.resultants(c, room)?;
+            if r.load < target_p {
+                return Ok(Fixed::Beyond);
+            }
+            hi = room;
+        }
+        let mut a = if a > 0.0 && a < hi { a } else { 0.5 * room };
+        for _ in 0..200 {
+            let r = self.resultants(c, a)?;
+            let residual = r.load - target_p;
+            let newton = a - residual / r.load_a;
+            if (newton - a).abs() <= 1e-15 * a || residual == 0.0 {
+                return Ok(Fixed::Solved(a, r));
+            }
+            if residual > 0.0 {
+                hi = a;
+            } else {
+                lo = a;
+            }
+            a = if newton > lo && newton < hi {
+                newton
+            } else if hi.is_finite() {
+                0.5 * (lo + hi)
+            } else {
+                2.0 * a
+            };
+            // (An unbounded bracket, hi = inf, has not closed: inf <= inf would say it had.)
+            if hi.is_finite() && hi - lo <= 1e-15 * hi {
+                return Ok(Fixed::Solved(a, self.resultants(c, a)?));
+            }
+        }
+        Err(Error::NoConvergence {
+            what: "contact half-width under a moment",
+            iterations: 200,
+            last_step: (hi - lo) / hi,
+        })
+    }
+
+    /// For a tabulated profile at `A P = target_p`: `(centre, A M)` of the contact with its left
+    /// end on the first row and of the contact with its right end on the last row (the smallest
+    /// and largest moments the table can carry at this P). Errors when even the whole table
+    /// cannot carry P.
+    fn table_limits(&self, target_p: f64) -> Result<[(f64, f64); 2]> {
+        let (lower, upper) = self.profile.bounds();
+        let whole = self.resultants(0.5 * (lower + upper), 0.5 * (upper - lower))?;
+        if whole.load < target_p {
+            return Err(Error::OutsideProfile {
+                what: "contact under this normal load",
+                needed: [f64::NEG_INFINITY, f64::INFINITY],
+                defined: [lower, upper],
+            });
+        }
+        // With one end pinned, P grows as the other end moves away from it: bisection with
+        // Newton steps on the free end's distance to the pinned one, 2a in (0, upper - lower].
+        let pinned = |free_sign: f64| -> Result<(f64, f64)> {
+            let pin = if free_sign > 0.0 { lower } else { upper };
+            let (mut lo, mut hi) = (0.0, upper - lower);
+            let mut width = hi;
+            for _ in 0..200 {
+                let (c, a) = (pin + free_sign * 0.5 * width, 0.5 * width);
+                let r = self.resultants(c, a)?;
+                let residual = r.load - target_p;
+                // d(AP)/d(width) = (P_a + sign P_c)/2.
+                let newton = width - residual / (0.5 * (r.load_a + free_sign * r.load_c));
+                if residual > 0.0 {
+                    hi = width;
+                } else {
+                    lo = width;
+                }
+                if (newton - width).abs() <= 1e-15 * width || hi - lo <= 1e-15 * hi {
+                    return Ok((c, r.moment));
+                }
+                width = if newton > lo && newton < hi {
+                    newton
+                } else {
+                    0.5 * (lo + hi)
+                };
+            }
+            Err(Error::NoConvergence {
+                what: "contact with one end on the table's last row",
+                iterations: 200,
+                last_step: (hi - lo) / hi,
+            })
+        };
+        Ok([pinned(1.0)?, pinned(-1.0)?])
+    }
+}
