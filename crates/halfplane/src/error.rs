@@ -241,7 +241,7 @@ pub enum Error {
 
     /// A march asked to run until its cycle repeats ([`crate::history::Steady`]) did not get
     /// there within its most cycles.
-    #[error("no steady cycle within history.max_cycles = {max_cycles} cycles: the per-cell slip range still changed by {change:e} A f P between the last two cycles (history.steady_tolerance = {tolerance:e})")]
+    #[error("no steady cycle within history.max_cycles = {max_cycles} cycles: the per-cell slip range still changed by {change:.3e} A f P between the last two cycles (history.steady_tolerance = {tolerance:e})")]
     NotSteady {
         /// The most cycles allowed.
         max_cycles: usize,
