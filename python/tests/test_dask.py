@@ -24,6 +24,9 @@ def hertz_and_flat_rounded(n: int, seed: int) -> pd.DataFrame:
     return table
 
 
+# Shipping the rows from the client is the point of the test, so Dask's advice against it is
+# expected.
+@pytest.mark.filterwarnings("ignore:Sending large graph")
 def test_dask_on_a_local_cluster_equals_the_serial_batch():
     import halfplane.dask as hdask
 

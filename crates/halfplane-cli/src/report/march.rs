@@ -243,9 +243,10 @@ impl<'a> MarchReport<'a> {
             if let (Some(change), Some(met)) = (self.steady_change, self.steady_converged) {
                 let t = self.steady_tolerance;
                 let _ = match met {
+                    // The change itself is in the JSON: once converged it is often rounding.
                     true => writeln!(
                         o,
-                        "slip ranges: repeat (largest change in the last cycle {change:.2e} A f P <= history.steady_tolerance = {t:e})"
+                        "slip ranges: repeat (no cell's changed by more than history.steady_tolerance = {t:e} x A f P in the last cycle)"
                     ),
                     false => writeln!(
                         o,
