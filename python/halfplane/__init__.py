@@ -107,8 +107,13 @@ def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> Marc
 
     ``cells`` overrides the case's ``[solver] cells`` (8 to 1,000,000; default 400) across the
     largest contact of the history. Returns a :class:`MarchResult` with ``steps`` (the
-    ``march --csv`` columns), ``cycles`` (energy and largest slip amplitude per cycle) and
-    ``shakedown_cycle``.
+    ``march --csv`` columns), ``cycles`` (energy and largest slip amplitude per cycle),
+    ``shakedown_cycle``, ``cycles_run``, ``steady_change`` and ``steady_converged``.
+
+    With ``cycles = "steady"`` in the case's ``[history]`` the last cycle is repeated until no
+    cell's slip range changes by more than ``steady_tolerance`` (default 1e-10) x A f P_max
+    between consecutive cycles, at most ``max_cycles`` (default 1000) cycles; otherwise a
+    ``SolverError`` (variant ``NotSteady``) names the last change.
 
     With ``fields=True`` it also holds ``pressure``, ``traction``, ``slip`` and ``slip_increment``
     of every increment, each a float64 array of shape (increments, cells): memory is
@@ -133,6 +138,9 @@ def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> Marc
         shakedown_cycle=out["shakedown_cycle"],
         x=out["x"],
         fields=recorded,
+        cycles_run=out["cycles_run"],
+        steady_change=out["steady_change"],
+        steady_converged=out["steady_converged"],
     )
 
 

@@ -125,6 +125,12 @@ class MarchResult:
       max_slip_amplitude`` (energy per unit thickness, N mm/mm by default; amplitude is half the
       peak-to-peak slip, in the length unit);
     - ``shakedown_cycle``: the first cycle that the next one repeats, or None;
+    - ``cycles_run``: the cycles marched (all of the history's, or, with ``cycles = "steady"``,
+      those it took for the cycle to repeat);
+    - ``steady_change``: the largest change of a cell's peak-to-peak slip range between the last
+      two cycles, as a fraction of A f P_max (None with fewer than two cycles);
+    - ``steady_converged``: whether that change is within ``history.steady_tolerance``
+      (default 1e-10), or None with fewer than two cycles;
     - ``x``: cell centres (length unit), shape (cells,);
     - with ``fields=True``: ``pressure`` p (>= 0), ``traction`` q (positive in the direction of
       positive Q), ``slip`` (accumulated, positive in the sense positive Q drives) and
@@ -134,6 +140,9 @@ class MarchResult:
     steps: pd.DataFrame
     cycles: pd.DataFrame
     shakedown_cycle: Optional[int]
+    cycles_run: int
+    steady_change: Optional[float]
+    steady_converged: Optional[bool]
     x: np.ndarray
     pressure: Optional[np.ndarray]
     traction: Optional[np.ndarray]
@@ -147,10 +156,16 @@ class MarchResult:
         shakedown_cycle: Optional[int],
         x: np.ndarray,
         fields: Optional[Mapping[str, np.ndarray]] = None,
+        cycles_run: Optional[int] = None,
+        steady_change: Optional[float] = None,
+        steady_converged: Optional[bool] = None,
     ) -> None:
         self.steps = steps
         self.cycles = cycles
         self.shakedown_cycle = shakedown_cycle
+        self.cycles_run = len(cycles) if cycles_run is None else cycles_run
+        self.steady_change = steady_change
+        self.steady_converged = steady_converged
         self.x = x
         fields = fields or {}
         self.pressure = fields.get("pressure")
@@ -172,5 +187,6 @@ class MarchResult:
         fields = "with fields" if self.pressure is not None else "no fields"
         return (
             f"MarchResult({self.increments} increments, {self.cells} cells, "
-            f"{len(self.cycles)} cycles, shakedown_cycle={self.shakedown_cycle}, {fields})"
+            f"{len(self.cycles)} cycles, shakedown_cycle={self.shakedown_cycle}, "
+            f"steady_converged={self.steady_converged}, {fields})"
         )

@@ -88,6 +88,9 @@ def test_march_equals_the_command(cli, path):
     report = json.loads(run_cli(cli, ["march", relative(path), "--json"]).stdout)
     assert result.cycles.to_dict("records") == report["cycles"]
     assert result.shakedown_cycle == report["shakedown_cycle"]
+    assert result.cycles_run == report["cycles_run"]
+    assert result.steady_change == report["steady_change"]
+    assert result.steady_converged == report["steady_converged"]
     assert result.cells == report["cells"]
     assert result.x[1] - result.x[0] == report["cell_width"]
     increments = len(report["steps"])

@@ -152,3 +152,129 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
         stderr(&o)
     );
 }
+
+/// `examples/march-steady.toml` with `[history] cycles` replaced (and `max_cycles` dropped for a
+/// number).
+fn steady_case_with(dir: &std::path::Path, cycles: &str, extra: &str) -> std::path::PathBuf {
+    let text = std::fs::read_to_string(examples().join("march-steady.toml")).unwrap();
+    let mut lines: Vec<String> = text
+        .lines()
+        .filter(|l| !l.starts_with("max_cycles") || cycles.contains("steady"))
+        .map(|l| match l.starts_with("cycles = ") {
+            true => format!("cycles = {cycles}\n{extra}"),
+            false => l.to_string(),
+        })
+        .collect();
+    lines.push(String::new());
+    let path = dir.join(format!("case-{}.toml", cycles.replace('"', "")));
+    std::fs::write(&path, lines.join("\n")).unwrap();
+    path
+}
+
+fn march_json(path: &std::path::Path) -> serde_json::Value {
+    let o = run(&["march", path.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn cycles_steady_marches_until_the_slip_ranges_repeat_and_says_how_many() {
+    let dir = scratch("march-steady");
+    let steady = march_json(&examples().join("march-steady.toml"));
+    let cycles_run = steady["cycles_run"].as_u64().unwrap();
+    assert_eq!(
+        steady["cycles"].as_array().unwrap().len() as u64,
+        cycles_run
+    );
+    assert_eq!(steady["steady_converged"], true);
+    assert!(steady["steady_change"].as_f64().unwrap() <= 1e-10);
+    // The same march with that number of cycles given: the same increments, and converged; one
+    // cycle fewer has not converged (so the count is the first that meets the tolerance).
+    let fixed = march_json(&steady_case_with(&dir, &cycles_run.to_string(), ""));
+    assert_eq!(fixed["steps"], steady["steps"]);
+    assert_eq!(fixed["steady_converged"], true);
+    assert_eq!(fixed["cycles_run"], cycles_run);
+    let fewer = march_json(&steady_case_with(&dir, &(cycles_run - 1).to_string(), ""));
+    assert_eq!(fewer["steady_converged"], false);
+    // The table says so.
+    let o = run(&["march", example("march-steady.toml").as_str()]);
+    let table = stdout(&o);
+    assert!(
+        table.contains(&format!(
+            "{cycles_run} cycles of 40 (marched until the cycle repeated)"
+        )) && table.contains("slip ranges: repeat"),
+        "{table}"
+    );
+}
+
+#[test]
+fn steady_settings_are_checked_and_a_march_that_does_not_repeat_is_an_error() {
+    let dir = scratch("march-steady-errors");
+    let cases: [(&str, &str, &[&str]); 5] = [
+        (
+            "\"steady\"",
+            "max_cycles = 1",
+            &["history.max_cycles = 1", "from 2 to"],
+        ),
+        (
+            "3",
+            "max_cycles = 10",
+            &[
+                "history.max_cycles",
+                "only with history.cycles = \"steady\"",
+            ],
+        ),
+        (
+            "\"stedy\"",
+            "",
+            &["history.cycles = \"stedy\"", "\"steady\""],
+        ),
+        (
+            "\"steady\"",
+            "steady_tolerance = 0.0",
+            &["history.steady_tolerance = 0", "0 < t < 1"],
+        ),
+        // Three cycles are not enough for this case: the error names the last change.
+        (
+            "\"steady\"",
+            "max_cycles = 3",
+            &[
+                "history.max_cycles = 3",
+                "A f P",
+                "history.steady_tolerance = 1e-10",
+            ],
+        ),
+    ];
+    for (cycles, extra, needles) in cases {
+        let text = std::fs::read_to_string(examples().join("march-steady.toml")).unwrap();
+        let text: String = text
+            .lines()
+            .filter(|l| !l.starts_with("max_cycles") && !l.starts_with("steady_tolerance"))
+            .map(|l| match l.starts_with("cycles = ") {
+                true => format!("cycles = {cycles}\n{extra}\n"),
+                false => format!("{l}\n"),
+            })
+            .collect();
+        let path = dir.join("case.toml");
+        std::fs::write(&path, text).unwrap();
+        let o = run(&["march", path.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{cycles} {extra}: {}", stdout(&o));
+        let message = stderr(&o);
+        for n in needles {
+            assert!(message.contains(n), "{cycles} {extra}: {message}");
+        }
+    }
+    // Commands that need a history's length up front say which commands run it.
+    let o = run(&[
+        "stress",
+        example("march-steady.toml").as_str(),
+        "--grid",
+        "-1,1,3,0,1,2",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("history.cycles = \"steady\" is run by march"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -202,7 +202,8 @@ fn a_march_sweep_adds_the_march_columns_and_matches_the_march_command() {
     let table = rows(&sweep(&dir, &spec, "march.csv", &[]));
     assert_eq!(
         table[0][10..].join(","),
-        "error,energy,max_slip_amplitude,shakedown_cycle,final_stick_left,final_stick_right"
+        "error,energy,max_slip_amplitude,shakedown_cycle,final_stick_left,final_stick_right,\
+         cycles_run,steady_change,steady_converged"
     );
     for (row, f) in table[1..].iter().zip(["0.6", "0.9"]) {
         assert_eq!(row[0], f);
@@ -236,6 +237,39 @@ fn a_march_sweep_adds_the_march_columns_and_matches_the_march_command() {
         same(&row[14], &stick[0], "final_stick_left");
         same(&row[15], &stick[1], "final_stick_right");
         assert!(num(&row[11]) > 0.0, "partial slip dissipates");
+        assert_eq!(row[16], "2");
+        same(&row[17], &json["steady_change"], "steady_change");
+        assert_eq!(row[18], json["steady_converged"].to_string());
+    }
+}
+
+#[test]
+fn a_march_sweep_runs_cycles_steady_as_the_march_command_does() {
+    // cycles = "steady": each row marches until its cycle repeats and says how many it took.
+    let case = format!(
+        "{REFERENCE_CASE}[history]\nkind = \"cycle\"\ncycles = \"steady\"\nsteps_per_half = 10\nramp_steps = 5\n[solver]\ncells = 60\n"
+    );
+    let dir = scratch("sweep-march-steady");
+    let spec = format!(
+        "{case}[sweep]\nmode = \"grid\"\nanalysis = \"march\"\n[sweep.vary]\n\"friction.coefficient\" = [0.6, 0.9]\n"
+    );
+    let table = rows(&sweep(&dir, &spec, "march.csv", &[]));
+    for (row, f) in table[1..].iter().zip(["0.6", "0.9"]) {
+        assert!(row[10].is_empty(), "f = {f}: {}", row[10]);
+        let case_path = dir.join(format!("case-{f}.toml"));
+        std::fs::write(
+            &case_path,
+            case.replace("coefficient = 0.6", &format!("coefficient = {f}")),
+        )
+        .unwrap();
+        let o = run(&["march", case_path.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(row[16], json["cycles_run"].to_string());
+        assert_eq!(row[18], "true");
+        assert_eq!(json["steady_converged"], true);
+        let (got, want) = (num(&row[17]), json["steady_change"].as_f64().unwrap());
+        assert!((got - want).abs() <= 1e-14 * want.abs(), "{got} vs {want}");
     }
 }
 

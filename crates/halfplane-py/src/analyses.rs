@@ -106,9 +106,11 @@ impl Recorded {
 /// interrupt feels immediate, rarely enough that the check costs nothing measurable.
 const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
-/// Marches the case's history: `march --csv` (the steps), the cycles (index, energy, largest
-/// slip amplitude, as `march --json`), the shakedown cycle, the cell centres and, with `fields`,
-/// the four fields of every increment as (increments, cells) arrays.
+/// Marches the case's history (until its cycle repeats for `history.cycles = "steady"`):
+/// `march --csv` (the steps), the cycles (index, energy, largest slip amplitude, as
+/// `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
+/// (as `march --json`), the cell centres and, with `fields`, the four fields of every increment
+/// as (increments, cells) arrays.
 #[pyfunction]
 #[pyo3(signature = (case, cells=None, fields=false))]
 pub fn march_report<'py>(
@@ -118,12 +120,14 @@ pub fn march_report<'py>(
     fields: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let case = &case.case;
-    let history = case
-        .history()
+    let (history, until_steady) = case
+        .march_history()
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
+    let steady = case.steady();
     let options = case
         .solver_with_cells(cells)
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
+    // Marched until steady, the fields grow past the history's one cycle as the march goes.
     let increments = history.loads().len();
     let mut recorded = match fields {
         true => Some(Recorded::new(increments, options.cells()).ok_or_else(|| {
@@ -138,7 +142,7 @@ pub fn march_report<'py>(
     let contact = &case.contact;
     let mut last_check = Instant::now();
     let outcome = py.detach(|| {
-        march::march_until(contact, &history, &options, |_, f| {
+        let observer = |_: &march::StepReport, f: &Fields| {
             if let Some(r) = recorded.as_mut() {
                 r.observe(f);
             }
@@ -150,13 +154,17 @@ pub fn march_report<'py>(
                 Ok(()) => ControlFlow::Continue(()),
                 Err(interrupt) => ControlFlow::Break(interrupt),
             }
-        })
+        };
+        match &until_steady {
+            Some(s) => march::march_steady_until(contact, &history, s, &options, observer),
+            None => march::march_until(contact, &history, &options, observer),
+        }
     });
     let result = match outcome.map_err(|e| errors::from_library(py, &e))? {
         ControlFlow::Continue(result) => result,
         ControlFlow::Break(interrupt) => return Err(interrupt),
     };
-    let report = MarchReport::new(&result, &case.units);
+    let report = MarchReport::new(&result, &case.units, &steady, until_steady.is_some());
     let out = PyDict::new(py);
     out.set_item("steps_csv", report.csv())?;
     let cycles: Vec<(usize, f64, f64)> = result
@@ -166,9 +174,15 @@ pub fn march_report<'py>(
         .collect();
     out.set_item("cycles", cycles)?;
     out.set_item("shakedown_cycle", result.shakedown_cycle)?;
+    out.set_item("cycles_run", result.cycles.len())?;
+    out.set_item("steady_change", result.steady_change)?;
+    out.set_item(
+        "steady_converged",
+        result.steady_change.map(|c| steady.is_met(c)),
+    )?;
     out.set_item("x", PyArray1::from_vec(py, result.x.clone()))?;
     if let Some(r) = recorded {
-        let shape = [increments, r.cells];
+        let shape = [result.steps.len(), r.cells];
         for (name, values) in [
             ("pressure", r.pressure),
             ("traction", r.traction),

@@ -376,7 +376,8 @@ impl PyCase {
         self.case.cycle.map(|c| triple(c.as_given().1))
     }
 
-    /// Increments of the load history, or None without one.
+    /// Increments of the load history, or None without one (or when it is marched until its
+    /// cycle repeats, `cycles = "steady"`, so that its length is known only once marched).
     #[getter]
     fn increments(&self) -> Option<usize> {
         self.case.history().ok().map(|h| h.loads().len())
@@ -425,10 +426,16 @@ impl PyCase {
             let (a, b) = cycle.as_given();
             let _ = write!(o, ", point1={:?}, point2={:?}", triple(a), triple(b));
         }
-        if let Ok(h) = self.case.history() {
+        if let Ok((h, until_steady)) = self.case.march_history() {
             let _ = write!(o, ", history=<{} increments", h.loads().len());
-            if let Some(s) = h.cycles() {
-                let _ = write!(o, ", {} cycles", s.count());
+            match (h.cycles(), until_steady) {
+                (Some(_), Some(s)) => {
+                    let _ = write!(o, ", cycles until steady (at most {})", s.max_cycles());
+                }
+                (Some(s), None) => {
+                    let _ = write!(o, ", {} cycles", s.count());
+                }
+                (None, _) => {}
             }
             let _ = write!(o, ">, cells={}", self.case.solver.cells());
         }

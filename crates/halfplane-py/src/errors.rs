@@ -41,6 +41,7 @@ impl Kind {
             Error::ActiveSet { .. }
             | Error::NonPositivePivot { .. }
             | Error::NoConvergence { .. }
+            | Error::NotSteady { .. }
             | Error::ThreadPool { .. } => Kind::Solver,
             _ => Kind::Input,
         }
@@ -80,6 +81,7 @@ fn variant_name(error: &Error) -> &'static str {
         Error::ActiveSet { .. } => "ActiveSet",
         Error::NonPositivePivot { .. } => "NonPositivePivot",
         Error::NoConvergence { .. } => "NoConvergence",
+        Error::NotSteady { .. } => "NotSteady",
         Error::InvalidText { .. } => "InvalidText",
         Error::NotUsed { .. } => "NotUsed",
         Error::ThreadPool { .. } => "ThreadPool",

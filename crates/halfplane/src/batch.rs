@@ -10,7 +10,7 @@
 //! not depend on the number of threads: every row is solved by the same sequential code.
 
 use crate::error::{Error, Result};
-use crate::history::History;
+use crate::history::{History, Steady};
 use crate::labels::{PerEdge, PerPoint};
 use crate::march::{self, MarchOptions, MarchResult};
 use crate::steady::{self, Regime, SteadyOptions, SteadyState};
@@ -256,13 +256,17 @@ pub fn steady_summary(
 /// The columns a march adds to a summary row, in output order (a public interface). The names are
 /// those of the `march` command's cycle table and JSON (`energy`, `max_slip_amplitude`,
 /// `shakedown_cycle`); the final stick interval is `final_stick_left`/`final_stick_right`, since
-/// `stick_left`/`stick_right` already name the steady state's zone in [`STEADY_COLUMNS`].
-pub const MARCH_COLUMNS: [&str; 5] = [
+/// `stick_left`/`stick_right` already name the steady state's zone in [`STEADY_COLUMNS`];
+/// `cycles_run`, `steady_change` and `steady_converged` are the `march` JSON's.
+pub const MARCH_COLUMNS: [&str; 8] = [
     "energy",
     "max_slip_amplitude",
     "shakedown_cycle",
     "final_stick_left",
     "final_stick_right",
+    "cycles_run",
+    "steady_change",
+    "steady_converged",
 ];
 
 /// One marched history in the few numbers a design map needs.
@@ -272,20 +276,44 @@ pub struct MarchSummary {
     max_slip_amplitude: Option<f64>,
     shakedown_cycle: Option<usize>,
     final_stick: Option<[f64; 2]>,
+    cycles_run: usize,
+    steady_change: Option<f64>,
+    steady_converged: Option<bool>,
 }
 
 impl MarchSummary {
     /// The summary of a marched history: the last cycle's energy and largest slip amplitude (the
     /// steady cycle's, once shaken down; `None` for a history without cycles), the shakedown
-    /// cycle, and the largest stick interval at the last increment (`None` when nothing sticks).
-    pub fn of(result: &MarchResult) -> Self {
+    /// cycle, the largest stick interval at the last increment (`None` when nothing sticks),
+    /// the cycles run and the change of the slip ranges in the last, judged by `steady`'s
+    /// tolerance.
+    pub fn of(result: &MarchResult, steady: &Steady) -> Self {
         let last = result.cycles.last();
         Self {
             energy: last.map(|c| c.energy),
             max_slip_amplitude: last.map(|c| c.max_slip_amplitude()),
             shakedown_cycle: result.shakedown_cycle,
             final_stick: result.steps.last().and_then(|s| s.largest_stick()),
+            cycles_run: result.cycles.len(),
+            steady_change: result.steady_change,
+            steady_converged: result.steady_change.map(|c| steady.is_met(c)),
         }
+    }
+
+    /// Cycles marched.
+    pub fn cycles_run(&self) -> usize {
+        self.cycles_run
+    }
+
+    /// The largest change of a cell's slip range between the last two cycles, a fraction of
+    /// `A f P_max` (`None` with fewer than two cycles).
+    pub fn steady_change(&self) -> Option<f64> {
+        self.steady_change
+    }
+
+    /// Whether that change is within the steady tolerance (`None` with fewer than two cycles).
+    pub fn steady_converged(&self) -> Option<bool> {
+        self.steady_converged
     }
 
     /// Energy dissipated in the last cycle (per unit thickness).
@@ -309,16 +337,23 @@ impl MarchSummary {
     }
 }
 
-/// A march through `history`, summarised ([`march::march`] then [`MarchSummary::of`]).
+/// A march through `history`, summarised ([`march::march`], or [`march::march_steady`] when
+/// `until_steady`, then [`MarchSummary::of`] with `steady`'s tolerance).
 ///
 /// # Errors
-/// Every error of [`march::march`].
+/// Every error of [`march::march`] or [`march::march_steady`].
 pub fn march_summary(
     contact: &Contact,
     history: &History,
     options: &MarchOptions,
+    steady: &Steady,
+    until_steady: bool,
 ) -> Result<MarchSummary> {
-    march::march(contact, history, options, |_, _| {}).map(|r| MarchSummary::of(&r))
+    let result = match until_steady {
+        true => march::march_steady(contact, history, steady, options, |_, _| {}),
+        false => march::march(contact, history, options, |_, _| {}),
+    }?;
+    Ok(MarchSummary::of(&result, steady))
 }
 
 #[cfg(test)]
@@ -415,7 +450,8 @@ mod tests {
             .expect("valid cells");
         let contact = reference::hertz();
         let result = march::march(&contact, &history, &options, |_, _| {}).expect("marches");
-        let summary = march_summary(&contact, &history, &options).expect("marches");
+        let steady = Steady::default();
+        let summary = march_summary(&contact, &history, &options, &steady, false).expect("marches");
         let last = result.cycles.last().expect("a cyclic history");
         assert_eq!(summary.energy(), Some(last.energy));
         assert_eq!(
@@ -423,6 +459,12 @@ mod tests {
             Some(last.max_slip_amplitude())
         );
         assert_eq!(summary.shakedown_cycle(), result.shakedown_cycle);
+        assert_eq!(summary.cycles_run(), 2);
+        assert_eq!(summary.steady_change(), result.steady_change);
+        assert_eq!(
+            summary.steady_converged(),
+            result.steady_change.map(|c| c <= steady.tolerance())
+        );
         assert_eq!(
             summary.final_stick(),
             result.steps.last().and_then(|s| s.largest_stick())

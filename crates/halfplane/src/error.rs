@@ -239,6 +239,19 @@ pub enum Error {
         last_step: f64,
     },
 
+    /// A march asked to run until its cycle repeats ([`crate::history::Steady`]) did not get
+    /// there within its most cycles.
+    #[error("no steady cycle within history.max_cycles = {max_cycles} cycles: the per-cell slip range still changed by {change:.3e} A f P between the last two cycles (history.steady_tolerance = {tolerance:e})")]
+    NotSteady {
+        /// The most cycles allowed.
+        max_cycles: usize,
+        /// The largest change of a cell's slip range between the last two cycles, a fraction
+        /// of `A f P_max`.
+        change: f64,
+        /// The tolerance it had to meet.
+        tolerance: f64,
+    },
+
     /// A textual setting (an environment variable, a name) has a value that cannot be read.
     #[error("invalid {field} = {value:?}: must be {valid}")]
     InvalidText {

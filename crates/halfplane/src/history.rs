@@ -14,6 +14,92 @@ use std::f64::consts::PI;
 /// hours. Longer studies are split into several runs.
 pub const MAX_INCREMENTS: usize = 10_000_000;
 
+/// When a march through a cyclic history may stop: once the cycle repeats (`history.cycles =
+/// "steady"` in a case file), rather than after a number of cycles fixed in advance.
+///
+/// The cycle repeats when no cell's peak-to-peak slip range over a cycle differs from the
+/// previous cycle's by more than `tolerance` times `A f P_max` (the compliance, the friction
+/// coefficient and the largest normal load of the history: the scale of slip that
+/// `solver.slip_tolerance` also uses). The default, 1e-10, is the default slip-labelling
+/// threshold: a cell whose slip still shakes down by more than that in a cycle could still be
+/// labelled slipping in it, so stopping earlier could misplace the reported stick zone (on the
+/// case of `docs/convergence.md`, "The steady cycle", a tolerance relative to the largest slip
+/// range would need to be below 1e-7 to tell the shaking-down cells apart).
+///
+/// Valid by construction: `max_cycles` from 2 (two cycles are compared) to
+/// [`Steady::MAX_CYCLES`], `tolerance` with 0 < t < 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Steady {
+    max_cycles: usize,
+    tolerance: f64,
+}
+
+impl Default for Steady {
+    fn default() -> Self {
+        Self {
+            max_cycles: Self::DEFAULT_MAX_CYCLES,
+            tolerance: Self::DEFAULT_TOLERANCE,
+        }
+    }
+}
+
+impl Steady {
+    /// The default most cycles: a shakedown by 10x per cycle reaches the default tolerance in
+    /// about ten, and 1000 cycles of 100 increments take seconds at 400 cells.
+    pub const DEFAULT_MAX_CYCLES: usize = 1000;
+    /// The most cycles a steady march may be allowed; the increments are also limited by
+    /// [`MAX_INCREMENTS`].
+    pub const MAX_CYCLES: usize = MAX_INCREMENTS / 2;
+    /// The default tolerance, a fraction of `A f P_max` (the default slip-labelling threshold).
+    pub const DEFAULT_TOLERANCE: f64 = 1e-10;
+
+    /// Sets the most cycles (`history.max_cycles`); a march that has not repeated its cycle by
+    /// then is [`Error::NotSteady`].
+    pub fn with_max_cycles(mut self, max_cycles: usize) -> Result<Self> {
+        if !(2..=Self::MAX_CYCLES).contains(&max_cycles) {
+            return Err(Error::InvalidCount {
+                field: "history.max_cycles".into(),
+                value: max_cycles as u64,
+                min: 2,
+                max: Self::MAX_CYCLES as u64,
+            });
+        }
+        self.max_cycles = max_cycles;
+        Ok(self)
+    }
+
+    /// Sets the tolerance (`history.steady_tolerance`), a fraction of `A f P_max`.
+    pub fn with_tolerance(mut self, tolerance: f64) -> Result<Self> {
+        if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
+            return Err(Error::InvalidInput {
+                field: "history.steady_tolerance".into(),
+                value: tolerance,
+                valid: "a number with 0 < t < 1 (a fraction of A f P)",
+            });
+        }
+        self.tolerance = tolerance;
+        Ok(self)
+    }
+
+    /// The most cycles.
+    pub fn max_cycles(&self) -> usize {
+        self.max_cycles
+    }
+
+    /// The tolerance on the change of the per-cell slip range, a fraction of `A f P_max`.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// True when a change between consecutive cycles (as [`MarchResult::steady_change`]
+    /// gives it) is within the tolerance.
+    ///
+    /// [`MarchResult::steady_change`]: crate::march::MarchResult::steady_change
+    pub fn is_met(&self, change: f64) -> bool {
+        change <= self.tolerance
+    }
+}
+
 /// Where the cycles of a history start and how long they are.
 ///
 /// Valid by construction (only [`History`] builds one): `steps_per_cycle >= 2`, `count >= 1`,

@@ -2,7 +2,7 @@
 //! error names the field (as the file spells it) and what would be valid.
 
 use anyhow::{anyhow, bail, Context, Result};
-use halfplane::history::{Harmonic, History, Ramp};
+use halfplane::history::{Harmonic, History, Ramp, Steady};
 use halfplane::march::MarchOptions;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 use serde::Deserialize;
@@ -39,6 +39,8 @@ struct RawHistory {
     kind: Option<String>,
     file: Option<String>,
     cycles: Option<RawCount>,
+    max_cycles: Option<RawCount>,
+    steady_tolerance: Option<f64>,
     steps_per_half: Option<RawCount>,
     steps_per_cycle: Option<RawCount>,
     ramp: Option<String>,
@@ -111,6 +113,11 @@ pub struct Case {
     /// `[cycle]`, if the file has one.
     pub cycle: Option<Cycle>,
     history: Option<History>,
+    /// `history.cycles = "steady"`: march until the cycle repeats (the history holds one cycle,
+    /// which the march repeats).
+    until_steady: bool,
+    /// `history.max_cycles` and `history.steady_tolerance` (defaults where absent).
+    steady: Steady,
     /// `[solver]` (defaults where absent).
     pub solver: MarchOptions,
     /// The unit names of `[units]` (default N, mm, MPa), for labels only.
@@ -120,9 +127,28 @@ pub struct Case {
 }
 
 impl Case {
-    /// The history, or an error saying what `[history]` needs.
+    /// The history, or an error saying what `[history]` needs. A history marched until steady
+    /// (`history.cycles = "steady"`) is an error here: its length is known only once marched, so
+    /// only the commands that take [`Case::march_history`] run it.
     pub fn history(&self) -> Result<History> {
-        self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\", or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))
+        if self.until_steady {
+            bail!("history.cycles = \"steady\" is run by march, sweep (analysis = \"march\") and Python's halfplane.march only: give this command a number of cycles (march reports cycles_run, the count the cycle took to repeat)");
+        }
+        self.march_history().map(|(history, _)| history)
+    }
+
+    /// The history and, for `history.cycles = "steady"`, the criterion to march it by (the
+    /// history then holds its ramp and one cycle, which the march repeats).
+    pub fn march_history(&self) -> Result<(History, Option<Steady>)> {
+        let history = self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\", or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))?;
+        Ok((history, self.until_steady.then_some(self.steady)))
+    }
+
+    /// `history.max_cycles` and `history.steady_tolerance` (defaults where absent): the
+    /// tolerance also decides whether a march of a fixed number of cycles reached its steady
+    /// cycle (`steady_converged`).
+    pub fn steady(&self) -> Steady {
+        self.steady
     }
 
     /// The solver settings, with `cells` (from `--cells`) overriding `[solver] cells`.
@@ -243,21 +269,58 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.
-    let history = match raw.history {
-        Some(h) => Some(resolve_history(h, cycle.as_ref(), dir)?),
-        None => None,
+    let (history, until_steady, steady) = match raw.history {
+        Some(h) => {
+            let (until_steady, steady) = resolve_steady(&h)?;
+            let history = resolve_history(h, cycle.as_ref(), until_steady, dir)?;
+            (Some(history), until_steady, steady)
+        }
+        None => (None, false, Steady::default()),
     };
     Ok(Case {
         contact: Contact::new(profile, material, friction),
         cycle,
         history,
+        until_steady,
+        steady,
         solver,
         units: crate::units::Units::resolve(raw.units)?,
         fatigue: raw.fatigue,
     })
 }
 
-fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<History> {
+/// `history.cycles = "steady"` (the word, as [`RawCount`] keeps it quoted), with
+/// `history.max_cycles` (only then) and `history.steady_tolerance` (also with a number of
+/// cycles, where it decides `steady_converged`).
+fn resolve_steady(h: &RawHistory) -> Result<(bool, Steady)> {
+    let until_steady = match &h.cycles {
+        Some(RawCount::Other(word)) if word == "\"steady\"" => true,
+        Some(RawCount::Other(word)) => bail!(
+            "invalid history.cycles = {word}: must be a whole number from 1 to {}, or \"steady\" (march until the cycle repeats)",
+            halfplane::history::MAX_INCREMENTS
+        ),
+        _ => false,
+    };
+    let mut steady = Steady::default();
+    if let Some(raw) = &h.max_cycles {
+        if !until_steady {
+            bail!("history.max_cycles is used only with history.cycles = \"steady\" (it bounds the cycles marched until the cycle repeats)");
+        }
+        let max = count_in(raw, "history.max_cycles", 2, Steady::MAX_CYCLES)?;
+        steady = steady.with_max_cycles(max)?;
+    }
+    if let Some(t) = h.steady_tolerance {
+        steady = steady.with_tolerance(t)?;
+    }
+    Ok((until_steady, steady))
+}
+
+fn resolve_history(
+    h: RawHistory,
+    cycle: Option<&Cycle>,
+    until_steady: bool,
+    dir: &Path,
+) -> Result<History> {
     let kind = match (&h.kind, &h.file) {
         (Some(k), _) => k.clone(),
         (None, Some(_)) => "file".to_string(),
@@ -265,9 +328,18 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
     };
     let used: &[&str] = match kind.as_str() {
         "file" => &["file"],
-        "cycle" => &["cycles", "steps_per_half", "ramp", "ramp_steps"],
+        "cycle" => &[
+            "cycles",
+            "max_cycles",
+            "steady_tolerance",
+            "steps_per_half",
+            "ramp",
+            "ramp_steps",
+        ],
         "harmonic" => &[
             "cycles",
+            "max_cycles",
+            "steady_tolerance",
             "steps_per_cycle",
             "ramp_steps",
             "normal",
@@ -281,6 +353,8 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
     let given = [
         ("file", h.file.is_some()),
         ("cycles", h.cycles.is_some()),
+        ("max_cycles", h.max_cycles.is_some()),
+        ("steady_tolerance", h.steady_tolerance.is_some()),
         ("steps_per_half", h.steps_per_half.is_some()),
         ("steps_per_cycle", h.steps_per_cycle.is_some()),
         ("ramp", h.ramp.is_some()),
@@ -294,6 +368,16 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
     let count = |v: &Option<RawCount>, field: &str, min: usize, what: &str| match v {
         Some(v) => count_in(v, &format!("history.{field}"), min, max),
         None => Err(anyhow!("missing field history.{field}: give {what}")),
+    };
+    // Marched until steady, the history holds one cycle; the march repeats it.
+    let cycles = |h: &RawHistory| match until_steady {
+        true => Ok(1),
+        false => count(
+            &h.cycles,
+            "cycles",
+            1,
+            "the number of cycles >= 1, or \"steady\" (until the cycle repeats)",
+        ),
     };
     let ramp_steps = match &h.ramp_steps {
         Some(v) => count_in(v, "history.ramp_steps", 1, max)?,
@@ -340,7 +424,7 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
             History::in_phase(
                 first,
                 second,
-                count(&h.cycles, "cycles", 1, "the number of cycles >= 1")?,
+                cycles(&h)?,
                 count(
                     &h.steps_per_half,
                     "steps_per_half",
@@ -367,6 +451,7 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
                     r.phase.unwrap_or(0.0),
                 )?)
             };
+            let cycle_count = cycles(&h)?;
             if h.normal.is_none() {
                 bail!("missing field history.normal: give {{ mean = P0 > 0, amplitude = ..., phase = degrees }}");
             }
@@ -374,7 +459,7 @@ fn resolve_history(h: RawHistory, cycle: Option<&Cycle>, dir: &Path) -> Result<H
                 harmonic(h.normal, "normal")?,
                 harmonic(h.shear, "shear")?,
                 harmonic(h.bulk, "bulk")?,
-                count(&h.cycles, "cycles", 1, "the number of cycles >= 1")?,
+                cycle_count,
                 count(
                     &h.steps_per_cycle,
                     "steps_per_cycle",

@@ -5,7 +5,7 @@ use crate::output::emit;
 use crate::report::march::MarchReport;
 use crate::units::Units;
 use anyhow::{anyhow, Result};
-use halfplane::history::History;
+use halfplane::history::{History, Steady};
 use halfplane::march::{self, Fields, MarchOptions, MarchResult};
 use halfplane::Contact;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -17,8 +17,12 @@ use std::path::{Path, PathBuf};
 pub struct MarchConfig {
     /// The contact: profile, material and friction.
     pub contact: Contact,
-    /// The load history of `[history]`.
+    /// The load history of `[history]` (its ramp and one cycle when marched until steady).
     pub history: History,
+    /// `history.max_cycles` and `history.steady_tolerance`.
+    pub steady: Steady,
+    /// `history.cycles = "steady"`: march until the cycle repeats.
+    pub until_steady: bool,
     /// `[solver]` with `--cells` applied.
     pub options: MarchOptions,
     /// `--fields DIR`: where to write the fields of every increment.
@@ -33,8 +37,11 @@ impl MarchConfig {
     /// Reads the case (it must have a `[history]`) and applies `--cells`.
     pub fn resolve(args: &MarchArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
+        let (history, until) = case.march_history()?;
         Ok(Self {
-            history: case.history()?,
+            history,
+            steady: case.steady(),
+            until_steady: until.is_some(),
             options: case.solver_with_cells(args.cells)?,
             contact: case.contact,
             fields: args.fields.clone(),
@@ -56,21 +63,36 @@ pub fn run(config: &MarchConfig) -> Result<()> {
             )
         })?;
     }
-    let bar = ProgressBar::new(config.history.loads().len() as u64);
+    // Marched until steady, the bar runs to max_cycles cycles (most marches end well before).
+    let planned = match (config.until_steady, config.history.cycles()) {
+        (true, Some(c)) => c.first_step() + config.steady.max_cycles() * c.steps_per_cycle(),
+        _ => config.history.loads().len(),
+    };
+    let bar = ProgressBar::new(planned as u64);
     bar.set_style(
         // The template is a constant that parses; a plain bar would do if it did not.
         ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
     let mut write_error = None;
-    let result = march::march(&config.contact, &config.history, &config.options, |r, f| {
+    let observer = |r: &march::StepReport, f: &Fields| {
         bar.inc(1);
         if let (Some(dir), None) = (fields, &write_error) {
             if let Err(e) = write_fields(&dir.join(format!("step_{:05}.csv", r.step)), f) {
                 write_error = Some(e);
             }
         }
-    });
+    };
+    let result = match config.until_steady {
+        true => march::march_steady(
+            &config.contact,
+            &config.history,
+            &config.steady,
+            &config.options,
+            observer,
+        ),
+        false => march::march(&config.contact, &config.history, &config.options, observer),
+    };
     bar.finish_and_clear();
     let result = result?;
     if let Some(e) = write_error {
@@ -79,7 +101,7 @@ pub fn run(config: &MarchConfig) -> Result<()> {
     if let (Some(dir), false) = (fields, result.cycles.is_empty()) {
         write_amplitudes(&dir.join("slip_amplitude.csv"), &result)?;
     }
-    let report = MarchReport::new(&result, &config.units);
+    let report = MarchReport::new(&result, &config.units, &config.steady, config.until_steady);
     emit(&match config.format {
         Format::Table => report.table(
             &result,

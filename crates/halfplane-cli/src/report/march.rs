@@ -2,7 +2,7 @@
 
 use super::{Cell, Column, Shown, Style};
 use crate::units::{Quantity, Units};
-use halfplane::history::History;
+use halfplane::history::{History, Steady};
 use halfplane::march::MarchResult;
 use serde::Serialize;
 use std::fmt::Write;
@@ -107,12 +107,33 @@ pub struct MarchReport<'a> {
     steps: Vec<MarchStepRow<'a>>,
     cycles: Vec<MarchCycleRow>,
     shakedown_cycle: Option<usize>,
+    /// Cycles marched (all of the history's, or those a march until steady took).
+    cycles_run: usize,
+    /// The largest change of a cell's slip range between the last two cycles, a fraction of
+    /// `A f P_max` (null with fewer than two cycles).
+    steady_change: Option<f64>,
+    /// Whether that change is within `history.steady_tolerance` (null with fewer than two
+    /// cycles).
+    steady_converged: Option<bool>,
+    /// The tolerance it was compared with (table only).
+    #[serde(skip)]
+    steady_tolerance: f64,
+    /// Marched until the cycle repeated (table only).
+    #[serde(skip)]
+    until_steady: bool,
     units: Units,
 }
 
 impl<'a> MarchReport<'a> {
-    /// The report of a marched history, with the unit names for the table.
-    pub fn new(result: &'a MarchResult, units: &Units) -> Self {
+    /// The report of a marched history, with the unit names for the table; `steady` holds the
+    /// tolerance `steady_converged` is decided by, and `until_steady` says whether the march ran
+    /// until its cycle repeated (`history.cycles = "steady"`).
+    pub fn new(
+        result: &'a MarchResult,
+        units: &Units,
+        steady: &Steady,
+        until_steady: bool,
+    ) -> Self {
         Self {
             cells: result.x.len(),
             // A march has at least 8 cells (the solver rejects fewer).
@@ -143,6 +164,11 @@ impl<'a> MarchReport<'a> {
                 })
                 .collect(),
             shakedown_cycle: result.shakedown_cycle,
+            cycles_run: result.cycles.len(),
+            steady_change: result.steady_change,
+            steady_converged: result.steady_change.map(|c| steady.is_met(c)),
+            steady_tolerance: steady.tolerance(),
+            until_steady,
             units: units.clone(),
         }
     }
@@ -171,11 +197,16 @@ impl<'a> MarchReport<'a> {
         let _ = match history.cycles() {
             Some(c) => writeln!(
                 o,
-                "history      {} increments: {} of ramp, {} cycles of {}",
-                history.loads().len(),
+                "history      {} increments: {} of ramp, {} cycles of {}{}",
+                self.steps.len(),
                 c.first_step(),
-                c.count(),
-                c.steps_per_cycle()
+                self.cycles_run,
+                c.steps_per_cycle(),
+                if self.until_steady {
+                    " (marched until the cycle repeated)"
+                } else {
+                    ""
+                }
             ),
             None => writeln!(
                 o,
@@ -209,12 +240,26 @@ impl<'a> MarchReport<'a> {
                     "steady cycle: not reached (no two consecutive cycles agree within {tolerance})"
                 ),
             };
+            if let (Some(change), Some(met)) = (self.steady_change, self.steady_converged) {
+                let t = self.steady_tolerance;
+                let _ = match met {
+                    // The change itself is in the JSON: once converged it is often rounding.
+                    true => writeln!(
+                        o,
+                        "slip ranges: repeat (no cell's changed by more than history.steady_tolerance = {t:e} x A f P in the last cycle)"
+                    ),
+                    false => writeln!(
+                        o,
+                        "slip ranges: still changing ({change:.2e} A f P in the last cycle > history.steady_tolerance = {t:e}): more cycles would move them; cycles = \"steady\" marches until they repeat"
+                    ),
+                };
+            }
         }
         // With cycles, the ramp end and the end of every quarter of the last cycle (five steps,
         // so the search below is constant time); a file history lists every step. (Searching a
         // list of every step once per step made this quadratic: 1.1 s for 100,000 increments.)
         let ends: Option<Vec<usize>> = history.cycles().map(|c| {
-            let last = c.first_step() + (c.count() - 1) * c.steps_per_cycle();
+            let last = c.first_step() + (self.cycles_run.max(1) - 1) * c.steps_per_cycle();
             let mut v = vec![c.first_step()];
             v.extend((1..=4).map(|q| last + q * c.steps_per_cycle() / 4));
             v

@@ -137,8 +137,14 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
                     s.push(',');
                     num(&mut s, v.unwrap_or(f64::NAN));
                 }
+                let _ = write!(s, ",{},", m.cycles_run());
+                num(&mut s, m.steady_change().unwrap_or(f64::NAN));
+                s.push(',');
+                if let Some(met) = m.steady_converged() {
+                    let _ = write!(s, "{met}");
+                }
             }
-            None => s.push_str(",,,,,"),
+            None => s.push_str(",,,,,,,,"),
         }
     }
     s.push('\n');

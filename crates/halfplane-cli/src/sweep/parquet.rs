@@ -1,6 +1,6 @@
 //! Parquet output of a sweep (the `parquet` feature): the same columns as the CSV, typed. The
 //! varied paths and the numbers are `Float64`, `regime` and `error` are `Utf8`,
-//! `shakedown_cycle` is `UInt64`; a value the row does not have is null (never NaN), and `error`
+//! `shakedown_cycle` and `cycles_run` are `UInt64`, `steady_converged` is `Boolean`; a value the row does not have is null (never NaN), and `error`
 //! is null when the row succeeded. Each chunk of rows is written as it arrives; row groups hold
 //! at most [`ROW_GROUP_ROWS`] rows, so memory stays bounded whatever the sweep's length.
 
@@ -8,7 +8,7 @@ use super::spec::Analysis;
 use super::template::Outcome;
 use super::{csv::part_path, Layout, RowSink};
 use anyhow::{anyhow, Context, Result};
-use arrow_array::builder::{Float64Builder, StringBuilder, UInt64Builder};
+use arrow_array::builder::{BooleanBuilder, Float64Builder, StringBuilder, UInt64Builder};
 use arrow_array::{ArrayRef, RecordBatch};
 use arrow_schema::{DataType, Field, Schema, SchemaRef};
 use parquet::arrow::ArrowWriter;
@@ -47,7 +47,8 @@ pub fn schema(layout: &Layout) -> Schema {
     for name in &layout.columns()[layout.varied.len()..] {
         let kind = match name.as_str() {
             "regime" | "error" => DataType::Utf8,
-            "shakedown_cycle" => DataType::UInt64,
+            "shakedown_cycle" | "cycles_run" => DataType::UInt64,
+            "steady_converged" => DataType::Boolean,
             _ => DataType::Float64,
         };
         fields.push(Field::new(name, kind, true));
@@ -129,6 +130,16 @@ impl ParquetSink {
             columns.push(Arc::new(shakedown.finish()));
             columns.push(march(&|m| m.final_stick().map(|z| z[0])));
             columns.push(march(&|m| m.final_stick().map(|z| z[1])));
+            let mut cycles_run = UInt64Builder::with_capacity(n);
+            let mut converged = BooleanBuilder::with_capacity(n);
+            for r in rows {
+                let m = r.outcome.march.as_ref();
+                cycles_run.append_option(m.map(|m| m.cycles_run() as u64));
+                converged.append_option(m.and_then(|m| m.steady_converged()));
+            }
+            columns.push(Arc::new(cycles_run.finish()));
+            columns.push(march(&|m| m.steady_change()));
+            columns.push(Arc::new(converged.finish()));
         }
         RecordBatch::try_new(self.schema.clone(), columns)
             .map_err(|e| anyhow!("cannot assemble the rows for {}: {e}", self.part.display()))

@@ -165,12 +165,20 @@ fn parquet(path: &Path, wanted: &[&str]) -> Result<SweepTable> {
                         }
                     }
                 }
-                DataType::Utf8 => {
-                    let text: Vec<String> = array
-                        .as_string::<i32>()
-                        .iter()
-                        .map(|s| s.unwrap_or("").to_string())
-                        .collect();
+                // A Boolean (steady_converged) reads as the CSV's words do.
+                DataType::Utf8 | DataType::Boolean => {
+                    let text: Vec<String> = match array.data_type() {
+                        DataType::Boolean => array
+                            .as_boolean()
+                            .iter()
+                            .map(|b| b.map_or(String::new(), |b| b.to_string()))
+                            .collect(),
+                        _ => array
+                            .as_string::<i32>()
+                            .iter()
+                            .map(|s| s.unwrap_or("").to_string())
+                            .collect(),
+                    };
                     match &mut columns[k] {
                         Values::Text(v) => v.extend(text),
                         Values::Number(v) if v.is_empty() => columns[k] = Values::Text(text),

@@ -92,7 +92,7 @@ impl Template {
                 "missing section [cycle]: a steady sweep analyses the case's cycle (for a march sweep set analysis = \"march\" in [sweep])"
             ),
             Analysis::March => {
-                base.history()?;
+                base.march_history()?;
             }
             _ => {}
         }
@@ -277,8 +277,14 @@ impl Template {
                     }
                     None => None,
                 };
-                let march = case.history().and_then(|history| {
-                    Ok(batch::march_summary(&case.contact, &history, &case.solver)?)
+                let march = case.march_history().and_then(|(history, until)| {
+                    Ok(batch::march_summary(
+                        &case.contact,
+                        &history,
+                        &case.solver,
+                        &case.steady(),
+                        until.is_some(),
+                    )?)
                 });
                 let march = match march {
                     Ok(m) => Some(m),

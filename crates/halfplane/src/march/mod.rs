@@ -48,6 +48,6 @@ mod solve;
 mod toeplitz;
 mod types;
 
-pub use cycles::{march, march_until};
+pub use cycles::{march, march_steady, march_steady_until, march_until};
 pub use marcher::Marcher;
 pub use types::{CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, StepReport};

@@ -240,4 +240,9 @@ pub struct MarchResult {
     /// The first cycle that the next one repeats (slip ranges and energy within
     /// `shakedown_tolerance`), if any.
     pub shakedown_cycle: Option<usize>,
+    /// The largest change of a cell's peak-to-peak slip range between the last two cycles, as a
+    /// fraction of `A f P_max` (the scale of [`Steady`](crate::history::Steady)'s tolerance);
+    /// `None` with fewer than two cycles. For a march until steady, the change that met the
+    /// tolerance.
+    pub steady_change: Option<f64>,
 }
