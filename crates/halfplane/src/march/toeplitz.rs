@@ -35,6 +35,8 @@ const LEVINSON_STEPS_MAX: usize = 64;
 const CG_FROM: usize = 256;
 /// Most conjugate-gradient iterations for a generator.
 const CG_ITERATIONS: usize = 200;
+/// Iterations without a lower residual after which CG has reached its rounding floor.
+const CG_STALL: usize = 8;
 
 /// Real FFTs of one size with their work buffers.
 struct Fft {
@@ -254,7 +256,18 @@ impl Toeplitz {
                 }
                 x
             }
-            None => self.generator_by_cg(n).unwrap_or_else(|| {
+            None => {
+                // Start CG from the nearest cached generator, cut or zero-padded to order n.
+                let start = self.cache.iter().min_by_key(|g| g.n.abs_diff(n)).map(|g| {
+                    g.x.iter()
+                        .copied()
+                        .chain(std::iter::repeat(0.0))
+                        .take(n)
+                        .collect()
+                });
+                self.generator_by_cg(n, start)
+            }
+            .unwrap_or_else(|| {
                 let mut x = vec![1.0 / self.row[0]];
                 while x.len() < n {
                     step_up(&mut x, &self.row);
@@ -291,9 +304,11 @@ impl Toeplitz {
     /// `c_k = ((n - k) t_k + k t_{n-k}) / n` (R. Chan & Ng 1996, eq. 2.5); it is positive
     /// definite when `T_n` is. Products with `T_n` use its own circulant embedding. Stops when
     /// the residual is below 1e-15 of `|e_0|`, near rounding (the Gohberg-Semencul form
-    /// multiplies the error of x by up to the condition number, ~N here); `None` if it has not
-    /// after [`CG_ITERATIONS`] (the caller then uses Levinson, exact but O(n^2)).
-    fn generator_by_cg(&mut self, n: usize) -> Option<Vec<f64>> {
+    /// multiplies the error of x by up to the condition number, ~N here), or when it has not
+    /// fallen for [`CG_STALL`] iterations at a residual below 1e-12 (the rounding floor of very
+    /// long runs); `None` otherwise after [`CG_ITERATIONS`] (the caller then uses Levinson,
+    /// exact but O(n^2)).
+    fn generator_by_cg(&mut self, n: usize, start: Option<Vec<f64>>) -> Option<Vec<f64>> {
         let t = &self.row[..n];
         let m = (2 * n).next_power_of_two();
         let mut big = Fft::new(&mut self.planner, m);
@@ -323,27 +338,42 @@ impl Toeplitz {
             }
             small.invert(s, y);
         };
-        let mut x = vec![0.0; n];
-        let mut r = vec![0.0; n];
-        r[0] = 1.0;
-        let (mut y, mut ap) = (vec![0.0; n], vec![0.0; n]);
-        precondition(&mut small, &r, &mut y);
-        let mut p = y.clone();
-        let mut rz: f64 = r.iter().zip(&y).map(|(a, b)| a * b).sum();
         let mut w = vec![Complex::default(); h];
-        for _ in 0..CG_ITERATIONS {
-            big.spectrum(&p, &mut w);
+        let mut product = |big: &mut Fft, v: &[f64], out: &mut [f64]| {
+            big.spectrum(v, &mut w);
             for (a, e) in w.iter_mut().zip(&embedding) {
                 *a *= e;
             }
-            big.invert(&mut w, &mut ap);
+            big.invert(&mut w, out);
+        };
+        let (mut y, mut ap) = (vec![0.0; n], vec![0.0; n]);
+        let mut x = start.unwrap_or_else(|| vec![0.0; n]);
+        product(&mut big, &x, &mut ap);
+        let mut r: Vec<f64> = ap.iter().map(|v| -v).collect();
+        r[0] += 1.0;
+        precondition(&mut small, &r, &mut y);
+        let mut p = y.clone();
+        let mut rz: f64 = r.iter().zip(&y).map(|(a, b)| a * b).sum();
+        let mut best = (f64::INFINITY, 0);
+        for _ in 0..CG_ITERATIONS {
+            product(&mut big, &p, &mut ap);
             let alpha = rz / p.iter().zip(&ap).map(|(a, b)| a * b).sum::<f64>();
             for i in 0..n {
                 x[i] += alpha * p[i];
                 r[i] -= alpha * ap[i];
             }
-            if r.iter().map(|v| v * v).sum::<f64>().sqrt() <= 1e-15 {
+            let residual = r.iter().map(|v| v * v).sum::<f64>().sqrt();
+            if residual <= 1e-15 {
                 return Some(x);
+            }
+            if residual < best.0 {
+                best = (residual, 0);
+            } else {
+                best.1 += 1;
+                if best.1 == CG_STALL && best.0 <= 1e-12 {
+                    // Rounding floor reached (it grows with the condition number, ~n).
+                    return Some(x);
+                }
             }
             precondition(&mut small, &r, &mut y);
             let next: f64 = r.iter().zip(&y).map(|(a, b)| a * b).sum();
@@ -467,14 +497,22 @@ pub(super) mod tests {
         for n in [256, 700, 2000] {
             let row = log_row(n);
             let mut t = Toeplitz::new(row.clone()).unwrap();
-            let by_cg = t.generator_by_cg(n).expect("CG converges");
             let mut exact = vec![1.0 / row[0]];
             while exact.len() < n {
                 step_up(&mut exact, &row);
             }
+            let by_cg = t.generator_by_cg(n, None).expect("CG converges");
+            // Warm-started from x cut short by 37 and zero-padded, as the marcher starts from a
+            // cached shorter generator.
+            let start = exact[..n - 37].iter().copied().chain([0.0; 37]).collect();
+            let warm = t.generator_by_cg(n, Some(start)).expect("CG converges");
             let scale = exact.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            for (i, (a, e)) in by_cg.iter().zip(&exact).enumerate() {
+            for (i, ((a, b), e)) in by_cg.iter().zip(&warm).zip(&exact).enumerate() {
                 assert!((a - e).abs() < 1e-11 * scale, "n = {n}, {i}: {a} vs {e}");
+                assert!(
+                    (b - e).abs() < 1e-11 * scale,
+                    "n = {n}, {i}: warm {b} vs {e}"
+                );
             }
             // Levinson steps down and up again return the same generator.
             let mut x = exact.clone();
