@@ -217,6 +217,16 @@ impl Marcher {
             }
         }
         crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
+        let start_bulk = start.map_or(0.0, |p| p.bulk());
+        if load.shear() == 0.0
+            && load.bulk() == start_bulk
+            && self.traction.iter().all(|q| *q == 0.0)
+        {
+            // Pressing alone: every sub-step would only move the edge (zero traction sticks, see
+            // `advance`), so the end state is reached in one, without the O(N) work per crossing.
+            crossings.clear();
+            self.half_width = a;
+        }
         crossings.push((1.0, a));
         self.slip_increment.fill(0.0);
         self.slip_travel.fill(0.0);

@@ -18,8 +18,10 @@
 //! displacement increment, as `docs/theory.md`, "Time marching", states). Cells whose traction
 //! exceeds the limit start to slip; slipping cells whose slip would reverse stick again; repeat
 //! until nothing changes. The stick cells' linear system is solved exactly by the Toeplitz
-//! inverse of each contiguous stick run (Gohberg-Semencul, O(n log n)), with preconditioned
-//! conjugate gradients coupling several runs.
+//! inverse of each contiguous stick run (Gohberg-Semencul, O(n log n); its generator comes from
+//! a cached run length by Levinson steps or, far from every cached length, by conjugate gradients
+//! with a circulant preconditioner, so no step is O(n^2)), with preconditioned conjugate
+//! gradients coupling several runs.
 //!
 //! Moving edges: each increment is split internally at the loads (linear within the increment)
 //! where the contact half-width a(P) passes a cell centre. A cell joins the contact at that

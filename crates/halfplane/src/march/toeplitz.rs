@@ -9,8 +9,11 @@
 //! `T_n^{-1} = (1/x_0) [L(x) L(x)^T - L(y) L(y)^T]`, with `x = T_n^{-1} e_0`, `y = Z J x`,
 //!
 //! where `L(v)` is the lower-triangular Toeplitz matrix with first column v, J reverses and Z
-//! shifts down. The Levinson recursion gives x for every n from one set of reflection
-//! coefficients, so a solve costs a few FFTs instead of a factorisation.
+//! shifts down. So a solve costs a few FFTs once x is known. x comes either from a cached
+//! generator of a nearby order, by Levinson steps (O(n) each, the reflection coefficient computed
+//! from x itself), or, when no cached order is near, by conjugate gradients preconditioned by
+//! T. Chan's optimal circulant (T. Chan 1988; R. Chan & Ng, SIAM Review 38 (1996) 427, section 2),
+//! O(n log n) per iteration; no step costs O(n^2) beyond the short runs formed directly.
 //!
 //! Owns the Toeplitz algebra and its generator cache. Never knows what the matrix means (the
 //! kernel is `kernel.rs`'s) nor which cells stick (`solve.rs` chooses the runs).
@@ -24,6 +27,16 @@ use std::sync::Arc;
 const DIRECT_BELOW: usize = 48;
 /// Generators kept for reuse (stick runs change length by a few cells per increment).
 const CACHE: usize = 12;
+/// A cached generator is stepped to a new order by Levinson steps (O(n) each) only when it is
+/// at most this many orders away; farther, conjugate gradients (O(n log n) per iteration, a few
+/// tens of iterations) cost less.
+const LEVINSON_STEPS_MAX: usize = 64;
+/// Below this order a generator with no cached neighbour is built by Levinson from order 1.
+const CG_FROM: usize = 256;
+/// Most conjugate-gradient iterations for a generator.
+const CG_ITERATIONS: usize = 200;
+/// Iterations without a lower residual after which CG has reached its rounding floor.
+const CG_STALL: usize = 8;
 
 /// Real FFTs of one size with their work buffers.
 struct Fft {
@@ -89,8 +102,6 @@ struct Generator {
 /// A symmetric positive definite Toeplitz matrix of order N, given by its first row.
 pub(crate) struct Toeplitz {
     row: Vec<f64>,
-    /// Levinson coefficients: `epsilon[k]` takes the generator of order k to order k + 1.
-    epsilon: Vec<f64>,
     planner: RealFftPlanner<f64>,
     full: Fft,
     full_spectrum: Vec<Complex<f64>>,
@@ -102,14 +113,15 @@ pub(crate) struct Toeplitz {
 }
 
 impl Toeplitz {
-    /// Errors if the matrix is not positive definite (a Levinson coefficient reaches 1).
+    /// Errors if a Levinson reflection coefficient of the first [`CG_FROM`] orders reaches 1
+    /// (the matrix is not positive definite). Larger orders are not checked here (that would
+    /// cost O(N^2)): the log kernel is positive definite by construction (`kernel.rs`).
     pub fn new(row: Vec<f64>) -> Result<Self> {
         let n = row.len();
-        let mut epsilon = vec![0.0; n];
-        // Levinson: f solves T_k f = e_0; epsilon_k = (row k of T_{k+1}) . [f; 0].
         let mut f = vec![1.0 / row[0]];
-        for k in 1..n {
-            let e: f64 = (0..k).map(|j| row[k - j] * f[j]).sum();
+        while f.len() < n.min(CG_FROM) {
+            let k = f.len();
+            let e: f64 = f.iter().enumerate().map(|(j, v)| row[k - j] * v).sum();
             if e.is_nan() || e.abs() >= 1.0 || row[0] <= 0.0 {
                 return Err(Error::NoConvergence {
                     what: "Levinson recursion (kernel not positive definite)",
@@ -117,8 +129,7 @@ impl Toeplitz {
                     last_step: e,
                 });
             }
-            epsilon[k] = e;
-            step_up(&mut f, e);
+            step_up(&mut f, &row);
         }
         let mut planner = RealFftPlanner::new();
         // Circulant embedding of T_N: first column [t_0 .. t_{N-1}, 0, t_{N-1} .. t_1].
@@ -133,7 +144,6 @@ impl Toeplitz {
         full.spectrum(&column, &mut full_spectrum);
         Ok(Self {
             row,
-            epsilon,
             planner,
             full,
             full_spectrum,
@@ -217,24 +227,54 @@ impl Toeplitz {
         }
     }
 
-    /// Index in the cache of the generator of order n, building it from the nearest cached one.
+    /// Index in the cache of the generator of order n: from the nearest cached one by Levinson
+    /// steps when that costs less than conjugate gradients, else by [`Self::generator_by_cg`].
     fn generator(&mut self, n: usize) -> usize {
         if let Some(i) = self.cache.iter().position(|g| g.n == n) {
             return i;
         }
-        let nearest = self.cache.iter().min_by_key(|g| g.n.abs_diff(n));
-        let mut x = match nearest {
-            Some(g) if g.n.abs_diff(n) < n => g.x.clone(),
-            _ => vec![1.0 / self.row[0]],
+        let nearest = self
+            .cache
+            .iter()
+            .filter(|g| g.n.abs_diff(n) <= LEVINSON_STEPS_MAX)
+            .min_by_key(|g| g.n.abs_diff(n));
+        let x = match nearest {
+            Some(g) => {
+                let mut x = g.x.clone();
+                while x.len() < n {
+                    step_up(&mut x, &self.row);
+                }
+                while x.len() > n {
+                    step_down(&mut x);
+                }
+                x
+            }
+            None if n < CG_FROM => {
+                let mut x = vec![1.0 / self.row[0]];
+                while x.len() < n {
+                    step_up(&mut x, &self.row);
+                }
+                x
+            }
+            None => {
+                // Start CG from the nearest cached generator, cut or zero-padded to order n.
+                let start = self.cache.iter().min_by_key(|g| g.n.abs_diff(n)).map(|g| {
+                    g.x.iter()
+                        .copied()
+                        .chain(std::iter::repeat(0.0))
+                        .take(n)
+                        .collect()
+                });
+                self.generator_by_cg(n, start)
+            }
+            .unwrap_or_else(|| {
+                let mut x = vec![1.0 / self.row[0]];
+                while x.len() < n {
+                    step_up(&mut x, &self.row);
+                }
+                x
+            }),
         };
-        while x.len() < n {
-            let k = x.len();
-            step_up(&mut x, self.epsilon[k]);
-        }
-        while x.len() > n {
-            let k = x.len() - 1;
-            step_down(&mut x, self.epsilon[k]);
-        }
         let x0 = x[0];
         let spectra = (n >= DIRECT_BELOW).then(|| {
             let mut fft = Fft::new(&mut self.planner, (2 * n).next_power_of_two());
@@ -258,31 +298,123 @@ impl Toeplitz {
         self.cache.push(Generator { n, x, x0, spectra });
         self.cache.len() - 1
     }
+
+    /// `x = T_n^{-1} e_0` by conjugate gradients (Golub & Van Loan, 4th ed., algorithm 11.5.1)
+    /// preconditioned by T. Chan's optimal circulant of `T_n`, whose first column is
+    /// `c_k = ((n - k) t_k + k t_{n-k}) / n` (R. Chan & Ng 1996, eq. 2.5); it is positive
+    /// definite when `T_n` is. Products with `T_n` use its own circulant embedding. Stops when
+    /// the residual is below 1e-15 of `|e_0|`, near rounding (the Gohberg-Semencul form
+    /// multiplies the error of x by up to the condition number, ~N here), or when it has not
+    /// fallen for [`CG_STALL`] iterations at a residual below 1e-12 (the rounding floor of very
+    /// long runs); `None` otherwise after [`CG_ITERATIONS`] (the caller then uses Levinson,
+    /// exact but O(n^2)).
+    fn generator_by_cg(&mut self, n: usize, start: Option<Vec<f64>>) -> Option<Vec<f64>> {
+        let t = &self.row[..n];
+        let m = (2 * n).next_power_of_two();
+        let mut big = Fft::new(&mut self.planner, m);
+        let h = m / 2 + 1;
+        let mut column = vec![0.0; m];
+        column[..n].copy_from_slice(t);
+        for k in 1..n {
+            column[m - k] = t[k];
+        }
+        let mut embedding = vec![Complex::default(); h];
+        big.spectrum(&column, &mut embedding);
+        let mut small = Fft::new(&mut self.planner, n);
+        let chan: Vec<f64> = (0..n)
+            .map(|k| {
+                let wrap = if k == 0 { 0.0 } else { t[n - k] };
+                ((n - k) as f64 * t[k] + k as f64 * wrap) / n as f64
+            })
+            .collect();
+        let mut eigen = vec![Complex::default(); n / 2 + 1];
+        small.spectrum(&chan, &mut eigen);
+        let mut spec = vec![Complex::default(); h.max(n / 2 + 1)];
+        let mut precondition = |small: &mut Fft, r: &[f64], y: &mut [f64]| {
+            let s = &mut spec[..n / 2 + 1];
+            small.spectrum(r, s);
+            for (v, e) in s.iter_mut().zip(&eigen) {
+                *v /= e.re;
+            }
+            small.invert(s, y);
+        };
+        let mut w = vec![Complex::default(); h];
+        let mut product = |big: &mut Fft, v: &[f64], out: &mut [f64]| {
+            big.spectrum(v, &mut w);
+            for (a, e) in w.iter_mut().zip(&embedding) {
+                *a *= e;
+            }
+            big.invert(&mut w, out);
+        };
+        let (mut y, mut ap) = (vec![0.0; n], vec![0.0; n]);
+        let mut x = start.unwrap_or_else(|| vec![0.0; n]);
+        product(&mut big, &x, &mut ap);
+        let mut r: Vec<f64> = ap.iter().map(|v| -v).collect();
+        r[0] += 1.0;
+        precondition(&mut small, &r, &mut y);
+        let mut p = y.clone();
+        let mut rz: f64 = r.iter().zip(&y).map(|(a, b)| a * b).sum();
+        let mut best = (f64::INFINITY, 0);
+        for _ in 0..CG_ITERATIONS {
+            product(&mut big, &p, &mut ap);
+            let alpha = rz / p.iter().zip(&ap).map(|(a, b)| a * b).sum::<f64>();
+            for i in 0..n {
+                x[i] += alpha * p[i];
+                r[i] -= alpha * ap[i];
+            }
+            let residual = r.iter().map(|v| v * v).sum::<f64>().sqrt();
+            if residual <= 1e-15 {
+                return Some(x);
+            }
+            if residual < best.0 {
+                best = (residual, 0);
+            } else {
+                best.1 += 1;
+                if best.1 == CG_STALL && best.0 <= 1e-12 {
+                    // Rounding floor reached (it grows with the condition number, ~n).
+                    return Some(x);
+                }
+            }
+            precondition(&mut small, &r, &mut y);
+            let next: f64 = r.iter().zip(&y).map(|(a, b)| a * b).sum();
+            let beta = next / rz;
+            rz = next;
+            for i in 0..n {
+                p[i] = y[i] + beta * p[i];
+            }
+        }
+        None
+    }
 }
 
-/// Levinson step: x solves T_k x = e_0 -> T_{k+1} x' = e_0, with epsilon_k.
-fn step_up(x: &mut Vec<f64>, e: f64) {
+/// Levinson step (Golub & Van Loan, 4th ed., section 4.7.3): x solves `T_k x = e_0`; returns
+/// x' solving `T_{k+1} x' = e_0`, `x' = ([x; 0] - e [0; J x]) / (1 - e^2)`, with the reflection
+/// coefficient `e = sum_j t_{k-j} x_j` (the last row of `T_{k+1}` times `[x; 0]`).
+fn step_up(x: &mut Vec<f64>, row: &[f64]) {
     let k = x.len();
+    let e: f64 = x.iter().enumerate().map(|(j, v)| row[k - j] * v).sum();
     let scale = 1.0 / (1.0 - e * e);
     x.push(0.0);
-    // x' = ([x; 0] - e [0; J x]) / (1 - e^2), updated in place pairwise.
-    let old: Vec<f64> = x[..k].to_vec();
-    for i in 0..=k {
-        let a = if i < k { old[i] } else { 0.0 };
-        let b = if i >= 1 { old[k - i] } else { 0.0 };
+    // Pairs (i, k - i) depend only on each other.
+    for i in 0..=k / 2 {
+        let (a, b) = (x[i], x[k - i]);
         x[i] = (a - e * b) * scale;
+        x[k - i] = (b - e * a) * scale;
     }
 }
 
-/// Inverse of [`step_up`]: order k + 1 -> k.
-fn step_down(x: &mut Vec<f64>, e: f64) {
+/// Inverse of [`step_up`]: order k + 1 -> k. The reflection coefficient is `e = -x'_k / x'_0`
+/// (the last and first entries of the formula in [`step_up`]).
+fn step_down(x: &mut Vec<f64>) {
     let k = x.len() - 1;
-    let big = x.clone();
-    x.truncate(k);
-    x[0] = (1.0 - e * e) * big[0];
-    for i in 1..k {
-        x[i] = big[i] + e * big[k - i];
+    let e = -x[k] / x[0];
+    for i in 1..=k / 2 {
+        let (a, b) = (x[i], x[k - i]);
+        x[i] = a + e * b;
+        x[k - i] = b + e * a;
     }
+    x[0] *= 1.0 - e * e;
+    x.truncate(k);
 }
 
 #[cfg(test)]
@@ -354,6 +486,45 @@ pub(super) mod tests {
         for i in 0..37usize {
             let e: f64 = (0..37).map(|j| row[i.abs_diff(j)] * v[j]).sum();
             assert!((y[i] - e).abs() < 1e-12 * e.abs().max(1.0), "{i}");
+        }
+    }
+
+    #[test]
+    fn conjugate_gradient_generators_match_levinson() {
+        // Two routes to x = T_n^{-1} e_0: CG with T. Chan's preconditioner and the exact
+        // Levinson recursion. CG stops at a residual of 1e-15 on a matrix of condition ~n, so
+        // 1e-11 relative leaves two decades for rounding.
+        for n in [256, 700, 2000] {
+            let row = log_row(n);
+            let mut t = Toeplitz::new(row.clone()).unwrap();
+            let mut exact = vec![1.0 / row[0]];
+            while exact.len() < n {
+                step_up(&mut exact, &row);
+            }
+            let by_cg = t.generator_by_cg(n, None).expect("CG converges");
+            // Warm-started from x cut short by 37 and zero-padded, as the marcher starts from a
+            // cached shorter generator.
+            let start = exact[..n - 37].iter().copied().chain([0.0; 37]).collect();
+            let warm = t.generator_by_cg(n, Some(start)).expect("CG converges");
+            let scale = exact.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            for (i, ((a, b), e)) in by_cg.iter().zip(&warm).zip(&exact).enumerate() {
+                assert!((a - e).abs() < 1e-11 * scale, "n = {n}, {i}: {a} vs {e}");
+                assert!(
+                    (b - e).abs() < 1e-11 * scale,
+                    "n = {n}, {i}: warm {b} vs {e}"
+                );
+            }
+            // Levinson steps down and up again return the same generator.
+            let mut x = exact.clone();
+            for _ in 0..40 {
+                step_down(&mut x);
+            }
+            for _ in 0..40 {
+                step_up(&mut x, &row);
+            }
+            for (a, e) in x.iter().zip(&exact) {
+                assert!((a - e).abs() < 1e-11 * scale, "n = {n}: steps {a} vs {e}");
+            }
         }
     }
 
