@@ -147,8 +147,9 @@ impl CrackSolver {
                 }
             }
         }
-        // The slip a stuck point holds: the previous increment's, or that where it closed.
-        let mut held = slip_before.to_vec();
+        // The slip a stuck point holds: the previous increment's (a point closing within the
+        // increment is taken to close at its start, an error of the order of the increment).
+        let held = slip_before;
         let gap_tol = 1e-9 * scale * self.crack.length;
         let traction_tol = 1e-9 * scale;
         for _ in 0..MAX_ITERATIONS {
@@ -189,7 +190,6 @@ impl CrackSolver {
             for k in 0..n {
                 let next = match states[k] {
                     FaceState::Open if gap[k] < -gap_tol => {
-                        held[k] = now[k];
                         if f > 0.0 {
                             FaceState::Stick
                         } else {
