@@ -210,3 +210,114 @@ fn a_crack_under_bending_closes_near_the_tip_only() {
     );
     assert!(inc.opening.iter().any(|g| *g > 1e-3 * scale));
 }
+
+mod under_the_contact {
+    use super::EDGE;
+    use halfplane::crack::{self, CrackOptions, Position, Verdict};
+    use halfplane::fatigue::FatigueConstants;
+    use halfplane::history::{History, Ramp};
+    use halfplane::march::MarchOptions;
+    use halfplane::{reference, LoadPoint};
+    use std::f64::consts::PI;
+
+    fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
+        History::in_phase(
+            LoadPoint::new("point1", 1000.0, -q, -bulk).unwrap(),
+            LoadPoint::new("point2", 1000.0, q, bulk).unwrap(),
+            2,
+            steps_per_half,
+            Ramp::NormalFirst,
+            10,
+        )
+        .unwrap()
+    }
+
+    fn constants() -> FatigueConstants {
+        FatigueConstants::default()
+            .with_threshold(160.0)
+            .and_then(|c| c.with_endurance_range(700.0))
+            .unwrap()
+    }
+
+    fn options() -> MarchOptions {
+        MarchOptions::default().with_cells(200).unwrap()
+    }
+
+    #[test]
+    fn far_from_the_contact_only_the_bulk_tension_acts() {
+        // 1e5 from the contact the contact's own stress is below 1e-4 of the bulk tension
+        // (Flamant: the surface sxx of the normal load vanishes outside it, the shear load's falls
+        // as 2Q/(pi x)): K_I follows the edge crack under the bulk tension while it pulls, and is
+        // zero while it pushes (the faces close).
+        let l = 0.05;
+        let opts = CrackOptions::new(Position::At(1e5), 0.0, vec![l], 0.0).unwrap();
+        let h = history(300.0, 60.0, 10);
+        let r = crack::analyse(&reference::hertz(), &h, &options(), &constants(), &opts).unwrap();
+        let row = &r.rows[0];
+        let expect = EDGE * 60.0 * (PI * l).sqrt();
+        assert!(
+            (row.k1_max / expect - 1.0).abs() < 1e-3,
+            "{} {expect}",
+            row.k1_max
+        );
+        assert_eq!(row.k1_min, 0.0);
+        assert!(row.k2_max.abs() < 1e-3 * expect && row.k2_min.abs() < 1e-3 * expect);
+        assert!((row.delta_k1 - row.k1_max).abs() < 1e-12);
+    }
+
+    #[test]
+    fn mirror_image_under_reversed_shear() {
+        // x -> -x with Q and the crack's angle reversed: the same K_I, K_II of opposite sign.
+        let c = constants();
+        let run = |pos: Position, angle: f64, q: f64| {
+            let opts = CrackOptions::new(pos, angle, vec![0.02, 0.08], 0.3).unwrap();
+            crack::analyse(
+                &reference::hertz(),
+                &history(q, 0.0, 10),
+                &options(),
+                &c,
+                &opts,
+            )
+            .unwrap()
+        };
+        let a = run(Position::RightEdge, 20.0, 300.0);
+        let b = run(Position::LeftEdge, -20.0, -300.0);
+        assert!((a.mouth + b.mouth).abs() < 1e-12);
+        for (ra, rb) in a.rows.iter().zip(&b.rows) {
+            let scale = ra.delta_k_eff.max(1e-9);
+            assert!(
+                (ra.k1_max - rb.k1_max).abs() < 1e-6 * scale,
+                "{ra:?} {rb:?}"
+            );
+            assert!(
+                (ra.k2_max + rb.k2_min).abs() < 1e-6 * scale,
+                "{ra:?} {rb:?}"
+            );
+            assert!((ra.delta_k_eff - rb.delta_k_eff).abs() < 1e-6 * scale);
+        }
+    }
+
+    #[test]
+    fn the_example_cycle_and_its_verdict() {
+        let lengths: Vec<f64> = (0..12).map(|i| 0.002 * 1.6f64.powi(i)).collect();
+        let opts = CrackOptions::new(Position::LargerRange, 0.0, lengths, 0.0).unwrap();
+        let h = history(300.0, 60.0, 30);
+        let r = crack::analyse(&reference::hertz(), &h, &options(), &constants(), &opts).unwrap();
+        for row in &r.rows {
+            println!(
+                "{:.5} K1 [{:.2}, {:.2}] K2 [{:.2}, {:.2}] dKeff {:.2} th {:.2}",
+                row.length,
+                row.k1_min,
+                row.k1_max,
+                row.k2_min,
+                row.k2_max,
+                row.delta_k_eff,
+                row.threshold
+            );
+            assert!(row.k1_min >= 0.0);
+        }
+        println!("{:?} {:?} mouth {}", r.verdict, r.arrest_length, r.mouth);
+        let (v, l) = Verdict::of(&r.rows);
+        assert_eq!((v, l), (r.verdict, r.arrest_length));
+    }
+}

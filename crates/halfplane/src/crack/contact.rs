@@ -50,6 +50,8 @@ pub struct IncrementSolution {
 /// Most passes over the cycle, and most active-set iterations per increment.
 const MAX_PASSES: usize = 6;
 const MAX_ITERATIONS: usize = 200;
+/// The largest violation accepted, relative to the largest load, when the active set cycles.
+const TOGGLE_TOLERANCE: f64 = 1e-3;
 
 impl CrackSolver {
     /// Solves the crack with face contact through a cycle of increments: `loads[m]` holds the
@@ -152,6 +154,10 @@ impl CrackSolver {
         let held = slip_before;
         let gap_tol = 1e-9 * scale * self.crack.length;
         let traction_tol = 1e-9 * scale;
+        let mut seen: Vec<Vec<FaceState>> = vec![states.clone()];
+        let mut one_at_a_time = false;
+        let mut repeats = 0;
+        let mut best: Option<(f64, Vec<f64>, Vec<FaceState>)> = None;
         for _ in 0..MAX_ITERATIONS {
             let mut a = self.influence.clone();
             let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
@@ -186,35 +192,73 @@ impl CrackSolver {
             let gap = self.displacement(&psi, 1);
             let now = self.displacement(&psi, 0);
             let (s22, s12) = self.tractions(&psi, normal, shear);
-            let mut changed = false;
+            // Proposed changes with the size of their violation (stress units); changes of
+            // contact come before changes of stick and slip, and once a set of states repeats
+            // only the largest violation is corrected per pass, which ends the cycling.
+            let l = self.crack.length;
+            let mut proposals: Vec<(usize, FaceState, f64, bool)> = Vec::new();
             for k in 0..n {
-                let next = match states[k] {
+                match states[k] {
                     FaceState::Open if gap[k] < -gap_tol => {
-                        if f > 0.0 {
+                        let closed = if f > 0.0 {
                             FaceState::Stick
                         } else {
                             FaceState::Slip(1)
-                        }
+                        };
+                        proposals.push((k, closed, -gap[k] / l, true));
                     }
-                    FaceState::Open => FaceState::Open,
-                    _ if s22[k] > traction_tol => FaceState::Open,
+                    FaceState::Open => {}
+                    _ if s22[k] > traction_tol => {
+                        proposals.push((k, FaceState::Open, s22[k], true));
+                    }
                     FaceState::Stick if s12[k].abs() > f * (-s22[k]) + traction_tol => {
-                        FaceState::Slip(if s12[k] > 0.0 { 1 } else { -1 })
+                        let sg = if s12[k] > 0.0 { 1 } else { -1 };
+                        let excess = s12[k].abs() - f * (-s22[k]);
+                        proposals.push((k, FaceState::Slip(sg), excess, false));
                     }
                     FaceState::Slip(sg)
                         if f > 0.0 && f64::from(sg) * (now[k] - held[k]) < -gap_tol =>
                     {
-                        FaceState::Stick
+                        let back = -f64::from(sg) * (now[k] - held[k]) / l;
+                        proposals.push((k, FaceState::Stick, back, false));
                     }
-                    same => same,
-                };
-                if next != states[k] {
-                    changed = true;
-                    states[k] = next;
+                    _ => {}
                 }
             }
-            if !changed {
+            if proposals.is_empty() {
                 return Some((psi, states));
+            }
+            let violation = proposals.iter().map(|p| p.2).fold(0.0, f64::max);
+            if best.as_ref().is_none_or(|b| violation < b.0) {
+                best = Some((violation, psi.clone(), states.clone()));
+            }
+            if !one_at_a_time && proposals.iter().any(|p| p.3) {
+                proposals.retain(|p| p.3);
+            }
+            if one_at_a_time {
+                let worst = proposals
+                    .iter()
+                    .copied()
+                    .max_by(|a, b| a.2.total_cmp(&b.2))?;
+                proposals = vec![worst];
+            }
+            for (k, next, _, _) in proposals {
+                states[k] = next;
+            }
+            if seen.contains(&states) {
+                if one_at_a_time {
+                    repeats += 1;
+                }
+                one_at_a_time = true;
+                if repeats >= 2 {
+                    // A point toggling between two states that each violate a condition
+                    // slightly (the discrete contact has no exact solution there): keep the
+                    // state of the smallest violation if it is small.
+                    let (v, psi, states) = best?;
+                    return (v <= TOGGLE_TOLERANCE * scale).then_some((psi, states));
+                }
+            } else {
+                seen.push(states.clone());
             }
         }
         None
