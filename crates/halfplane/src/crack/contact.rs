@@ -159,36 +159,12 @@ impl CrackSolver {
         let mut repeats = 0;
         let mut best: Option<(f64, Vec<f64>, Vec<FaceState>)> = None;
         for _ in 0..MAX_ITERATIONS {
-            let mut a = self.influence.clone();
-            let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
-            rhs.extend_from_slice(shear);
-            for k in 0..n {
-                match states[k] {
-                    FaceState::Open => {}
-                    closed => {
-                        let (lower, upper) = a.split_at_mut((n + k) * n2);
-                        let normal_row = &mut lower[k * n2..(k + 1) * n2];
-                        let shear_row = &mut upper[..n2];
-                        if let FaceState::Slip(sg) = closed {
-                            let c = f64::from(sg) * f;
-                            for (s, v) in shear_row.iter_mut().zip(normal_row.iter()) {
-                                *s += c * v;
-                            }
-                            rhs[n + k] = shear[k] - c * normal[k];
-                        } else {
-                            shear_row.fill(0.0);
-                            shear_row[..n].copy_from_slice(&self.tail[k]);
-                            rhs[n + k] = held[k];
-                        }
-                        normal_row.fill(0.0);
-                        normal_row[n..].copy_from_slice(&self.tail[k]);
-                        rhs[k] = 0.0;
-                    }
-                }
+            let (a, mut psi) = self.system(normal, shear, f, &states, held);
+            if states.iter().all(|s| !s.closed()) {
+                self.open.solve(&mut psi); // the open crack's factorisation, made once
+            } else {
+                Lu::factor(a, n2)?.solve(&mut psi);
             }
-            let lu = Lu::factor(a, n2)?;
-            let mut psi = rhs;
-            lu.solve(&mut psi);
             let gap = self.displacement(&psi, 1);
             let now = self.displacement(&psi, 0);
             let (s22, s12) = self.tractions(&psi, normal, shear);
@@ -262,6 +238,49 @@ impl CrackSolver {
             }
         }
         None
+    }
+
+    /// The system of one active set: open points keep their traction equations; a closed
+    /// point's normal row sets its opening to zero, its shear row holds its slip (stick) or
+    /// makes the shear traction `f |s22|` with the slip's sign (slip).
+    fn system(
+        &self,
+        normal: &[f64],
+        shear: &[f64],
+        f: f64,
+        states: &[FaceState],
+        held: &[f64],
+    ) -> (Vec<f64>, Vec<f64>) {
+        let n = self.n;
+        let n2 = 2 * n;
+        let mut a = self.influence.clone();
+        let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
+        rhs.extend_from_slice(shear);
+        for k in 0..n {
+            match states[k] {
+                FaceState::Open => {}
+                closed => {
+                    let (lower, upper) = a.split_at_mut((n + k) * n2);
+                    let normal_row = &mut lower[k * n2..(k + 1) * n2];
+                    let shear_row = &mut upper[..n2];
+                    if let FaceState::Slip(sg) = closed {
+                        let c = f64::from(sg) * f;
+                        for (s, v) in shear_row.iter_mut().zip(normal_row.iter()) {
+                            *s += c * v;
+                        }
+                        rhs[n + k] = shear[k] - c * normal[k];
+                    } else {
+                        shear_row.fill(0.0);
+                        shear_row[..n].copy_from_slice(&self.tail[k]);
+                        rhs[n + k] = held[k];
+                    }
+                    normal_row.fill(0.0);
+                    normal_row[n..].copy_from_slice(&self.tail[k]);
+                    rhs[k] = 0.0;
+                }
+            }
+        }
+        (a, rhs)
     }
 
     fn report(

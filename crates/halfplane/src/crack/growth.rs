@@ -61,7 +61,7 @@ pub struct CrackOptions {
 }
 
 /// Most crack lengths in one analysis.
-pub const MAX_LENGTHS: usize = 10_000;
+pub const MAX_LENGTHS: usize = 1000;
 
 impl CrackOptions {
     /// Cracks at `position`, `angle_degrees` from the surface normal (strictly between -90 and
@@ -275,15 +275,11 @@ pub fn analyse(
     }
     let l0 = el_haddad_length(dk_th, ds0);
     let run = |mouth: f64, lengths: &[f64]| -> Result<Vec<CrackRow>> {
-        lengths
-            .iter()
-            .map(|&l| {
-                let c = Crack::new(mouth, crack.angle, l)?;
-                let mut row = length_row(&c, contact, &states, crack)?;
-                row.threshold = threshold(dk_th, l0, l);
-                Ok(row)
-            })
-            .collect()
+        let mut rows = length_rows(mouth, lengths, contact, &states, crack)?;
+        for row in &mut rows {
+            row.threshold = threshold(dk_th, l0, row.length);
+        }
+        Ok(rows)
     };
     let mouth = match crack.position {
         Position::LeftEdge => -a_max,
@@ -313,31 +309,51 @@ pub fn analyse(
     })
 }
 
-/// One length over the kept increments (threshold left at 0 for the caller).
-fn length_row(
-    c: &Crack,
+/// Every length over the kept increments (thresholds left at 0 for the caller). The uncracked
+/// stress of an increment is evaluated at the collocation points of all lengths in one call, so
+/// the stress route's set-up is paid once per increment rather than once per length.
+fn length_rows(
+    mouth: f64,
+    lengths: &[f64],
     contact: &Contact,
     states: &[MarchedTraction],
     options: &CrackOptions,
-) -> Result<CrackRow> {
-    let solver = CrackSolver::new(c, &contact.material, options.points)?;
-    let mut loads = Vec::with_capacity(states.len());
-    for s in states {
-        let f = stress::field(
-            &s.traction,
-            s.load.bulk(),
-            &contact.material,
-            solver.x(),
-            solver.z(),
-        )?;
-        let (normal, shear): (Vec<f64>, Vec<f64>) = (0..f.len())
-            .map(|i| solver.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
-            .unzip();
-        loads.push((normal, shear));
+) -> Result<Vec<CrackRow>> {
+    let solvers = lengths
+        .iter()
+        .map(|&l| {
+            let c = Crack::new(mouth, options.angle, l)?;
+            CrackSolver::new(&c, &contact.material, options.points)
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let x: Vec<f64> = solvers.iter().flat_map(|s| s.x().iter().copied()).collect();
+    let z: Vec<f64> = solvers.iter().flat_map(|s| s.z().iter().copied()).collect();
+    let mut loads: Vec<Vec<(Vec<f64>, Vec<f64>)>> =
+        vec![Vec::with_capacity(states.len()); solvers.len()];
+    for st in states {
+        let f = stress::field(&st.traction, st.load.bulk(), &contact.material, &x, &z)?;
+        let mut i = 0;
+        for (solver, l) in solvers.iter().zip(&mut loads) {
+            let (normal, shear): (Vec<f64>, Vec<f64>) = (i..i + solver.x().len())
+                .map(|j| solver.resolve(f.sxx[j], f.szz[j], f.sxz[j]))
+                .unzip();
+            i += solver.x().len();
+            l.push((normal, shear));
+        }
     }
-    let solutions = solver.cycle(&loads, options.face_friction)?;
-    let increments: Vec<TipFactors> = solutions.iter().map(|s| s.factors).collect();
-    Ok(row_of(c.length(), increments, options.effective))
+    solvers
+        .iter()
+        .zip(&loads)
+        .map(|(solver, l)| {
+            let solutions = solver.cycle(l, options.face_friction)?;
+            let increments = solutions.iter().map(|s| s.factors).collect();
+            Ok(row_of(
+                solver.crack().length(),
+                increments,
+                options.effective,
+            ))
+        })
+        .collect()
 }
 
 /// The ranges of one length's increments.

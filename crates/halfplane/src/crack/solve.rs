@@ -51,7 +51,7 @@ pub struct CrackSolver {
     x: Vec<f64>,
     z: Vec<f64>,
     s: Vec<f64>,
-    open: Lu,
+    pub(super) open: Lu,
 }
 
 impl CrackSolver {
