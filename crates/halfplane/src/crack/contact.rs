@@ -1,4 +1,4 @@
-//! Crack faces in contact (Hills et al. 1996, ch. 8; Dai, Hills and Nowell on fretting cracks):
+//! Crack faces in contact (Hills et al. 1996; Dai, Hills and Nowell on fretting cracks):
 //! where the open solution would make the faces overlap they close; a closed point carries a
 //! compressive normal traction and a friction traction `|tau| <= f |s_nn|`, sticks (its slip
 //! keeps the value of the previous increment) or slips (`|tau| = f |s_nn|`, opposing the slip

@@ -1,10 +1,11 @@
 //! The stress of an edge dislocation in the half-plane with a traction-free surface: the kernel
 //! of the distributed dislocation technique (Hills, Kelly, Dai and Korsunsky, *Solution of Crack
-//! Problems: the Distributed Dislocation Technique*, 1996, ch. 2; the half-plane solution is
-//! Dundurs and Mura's, 1964).
+//! Problems: the Distributed Dislocation Technique*, 1996; the half-plane solution is Dundurs
+//! and Mura's, 1964).
 //!
 //! Derived here with Muskhelishvili's potentials, in the coordinates of [`crate::stress`]: the
-//! body is `z >= 0`, `w = x + i z`. Kolosov-Muskhelishvili (Barber, *Elasticity*, ch. 19):
+//! body is `z >= 0`, `w = x + i z`. Kolosov-Muskhelishvili (Muskhelishvili, *Some Basic Problems of the Mathematical Theory
+//! of Elasticity*, 1953):
 //! `sxx + szz = 4 Re Phi`, `szz - sxx + 2i sxz = 2 (conj(w) Phi' + Psi)`. The dislocation at `w0`
 //! in the whole plane has `Phi0 = g/(w - w0)`, `Psi0 = conj(g)/(w - w0) + g conj(w0)/(w - w0)^2`
 //! with `g = mu b / (i pi (kappa + 1))`, `b = bx + i bz` the displacement gained on a

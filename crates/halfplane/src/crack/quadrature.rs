@@ -1,5 +1,5 @@
-//! Gauss-Jacobi quadrature for a surface-breaking crack (Hills et al. 1996, section 3.4; Erdogan,
-//! Gupta and Cook, 1973). On `t` in [-1, 1], the mouth at `t = -1` and the tip at `t = 1`, a
+//! Gauss-Jacobi quadrature for a surface-breaking crack (Hills et al. 1996; Erdogan, Gupta and Cook,
+//! 1973). On `t` in [-1, 1], the mouth at `t = -1` and the tip at `t = 1`, a
 //! dislocation density is written `B(t) = w(t) phi(t)` with `w(t) = sqrt((1 + t)/(1 - t))`:
 //! square-root singular at the tip, bounded at the mouth, `phi` smooth. Integration points are
 //! the zeros of the Jacobi polynomial `P_N^(-1/2, 1/2)`, `t_i = cos(pi (2i - 1)/(2N + 1))`, with

@@ -1,5 +1,5 @@
 //! The crack's influence matrices and the open-crack solve: the distributed dislocation
-//! technique (Hills et al. 1996, ch. 3) with the half-plane kernel of `kernel.rs` and the rule of
+//! technique (Hills et al. 1996) with the half-plane kernel of `kernel.rs` and the rule of
 //! `quadrature.rs`.
 //!
 //! Unknowns: the densities of glide (`b1`, along `e1`, mouth to tip) and climb (`b2`, along
@@ -9,8 +9,9 @@
 //! vanishes (open faces). Opening and slip are `delta_j(s) = integral_s^l b_j`, the displacement
 //! of the `+e2` face less that of the `-e2` face (positive opening under tension).
 //! `K_I = pi sqrt(2 pi l) psi_2(1)`: a Griffith crack's density near its tip is
-//! `b_2 = K_I/(A pi sqrt(2 pi r))` (Hills et al. 1996, eq. 3.37 in these units), and
-//! `sqrt(l - xi) w(t) -> sqrt(l)` at the tip. `K_II = -pi sqrt(2 pi l) psi_1(1)`: the same with
+//! `b_2 = K_I/(A pi sqrt(2 pi r))` at distance `r` (the Griffith crack under tension `sigma` has
+//! `b_2 = sigma xi/(A pi sqrt(a^2 - xi^2))` with the kernel's `A/(s - xi)` on its line, and
+//! `K_I = sigma sqrt(pi a)`), and `sqrt(l - xi) w(t) -> sqrt(l)` at the tip. `K_II = -pi sqrt(2 pi l) psi_1(1)`: the same with
 //! the shear `tau` on the normal `n = -e2` of the module doc of [`super`].
 
 use super::kernel::{dislocation_stress, C};
