@@ -28,7 +28,7 @@ mod solve;
 pub use contact::{FaceState, IncrementSolution};
 pub use growth::{
     analyse, el_haddad_length, mts_equivalent, threshold, CrackOptions, CrackResult, CrackRow,
-    EffectiveRange, Position, Verdict, MAX_LENGTH_RATIO,
+    EffectiveRange, Position, Verdict, MAX_LENGTHS, MAX_LENGTH_RATIO,
 };
 pub use solve::{CrackSolver, TipFactors, MAX_POINTS, MIN_POINTS};
 
