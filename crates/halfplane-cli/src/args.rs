@@ -39,6 +39,10 @@ pub enum Command {
     /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
     /// Crossland, Ruiz F1/F2, MWCM; critical distances and lives with the constants of [fatigue]).
     Fatigue(FatigueArgs),
+    /// Will a crack grow? K_I and K_II of a straight surface-breaking crack ([crack]) over the
+    /// last cycle of [history], with crack-face contact, against El Haddad's short-crack
+    /// threshold from [fatigue] threshold and endurance_range; verdict over the lengths.
+    Crack(CrackArgs),
     /// Runs every row of a design (grid, random or Latin hypercube) over numeric fields of a case:
     /// the steady state (or a march) of each, on every core, streamed to CSV or Parquet.
     Sweep(SweepArgs),
@@ -163,6 +167,19 @@ pub struct FatigueArgs {
     #[arg(long)]
     pub cells: Option<usize>,
     // csv and table: one row per parameter.
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct CrackArgs {
+    /// Case file (TOML) with [material], [friction], [profile], a cyclic [history], [fatigue]
+    /// (threshold and endurance_range) and [crack]; optionally [solver] and [units].
+    pub case: PathBuf,
+    /// Cells (overrides [solver] cells).
+    #[arg(long)]
+    pub cells: Option<usize>,
+    // csv and table: one row per crack length.
     #[command(flatten)]
     pub format: FormatArgs,
 }

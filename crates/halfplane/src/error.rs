@@ -291,6 +291,15 @@ pub enum Error {
         kind: &'static str,
     },
 
+    /// An analysis needs constants that were not given.
+    #[error("the {what} needs {fields}")]
+    MissingConstants {
+        /// What needed them.
+        what: &'static str,
+        /// The fields, as the case file names them.
+        fields: &'static str,
+    },
+
     /// The worker pool of a batch could not be started (the system refused the threads).
     #[error("could not start the worker threads: {message}")]
     ThreadPool {

@@ -29,13 +29,15 @@
 //! (edge description), [`matching`] (prototype-to-test matching), [`evolution`] (stick zone
 //! along the cycle), [`slip_map`] (the slip-zone map of the paper's Figure 5), [`record`]
 //! (recorders for the marching solver), [`stress`] (stresses below the contact), [`fatigue`]
-//! (initiation parameters over the steady cycle), [`closed_form`]
+//! (initiation parameters over the steady cycle), [`crack`] (will a crack grow: stress
+//! intensity factors and the short-crack threshold), [`closed_form`]
 //! (reference solutions), [`load`] and [`material`] (validated inputs), [`labels`] (edges, points and halves,
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
 pub mod batch;
 pub mod closed_form;
+pub mod crack;
 pub mod design;
 pub mod error;
 pub mod evolution;

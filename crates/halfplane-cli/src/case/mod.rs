@@ -9,6 +9,7 @@ use serde::Deserialize;
 use std::path::Path;
 
 mod count;
+mod crack;
 mod csv;
 mod fatigue;
 
@@ -31,6 +32,7 @@ struct RawCase {
     solver: Option<RawSolver>,
     units: Option<crate::units::RawUnits>,
     fatigue: Option<toml::Table>,
+    crack: Option<toml::Table>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -124,6 +126,8 @@ pub struct Case {
     pub units: crate::units::Units,
     /// `[fatigue]` as written, resolved by [`Case::fatigue`] when a command needs it.
     fatigue: Option<toml::Table>,
+    /// `[crack]` as written, resolved by [`Case::crack`] when a command needs it.
+    crack: Option<toml::Table>,
 }
 
 impl Case {
@@ -169,6 +173,11 @@ impl Case {
     /// `[fatigue]`: the material constants (each validated) and the grid (defaults where absent).
     pub fn fatigue(&self) -> Result<FatigueSettings> {
         fatigue::resolve(self.fatigue.as_ref())
+    }
+
+    /// `[crack]`: the crack's position, angle, lengths and faces (`halfplane crack`).
+    pub fn crack(&self) -> Result<halfplane::crack::CrackOptions> {
+        crack::resolve(self.crack.as_ref())
     }
 
     /// The cycle, or an error saying the `[cycle]` section is needed.
@@ -286,6 +295,7 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         solver,
         units: crate::units::Units::resolve(raw.units)?,
         fatigue: raw.fatigue,
+        crack: raw.crack,
     })
 }
 

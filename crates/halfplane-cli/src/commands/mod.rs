@@ -1,6 +1,7 @@
 //! The commands, one module each: a validated configuration resolved from the raw arguments
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
+pub mod crack;
 pub mod design_map;
 pub mod evolve;
 pub mod fatigue;
@@ -23,6 +24,7 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
         Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
+        Command::Crack(a) => crack::run(&crack::CrackConfig::resolve(a)?),
         Command::Plot(PlotCommand::DesignMap(a)) => {
             design_map::run(&design_map::DesignMapConfig::resolve(a)?)
         }

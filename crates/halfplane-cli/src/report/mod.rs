@@ -2,6 +2,7 @@
 //! table, the CSV and the JSON alike: a [`Column`] names the CSV/JSON key, the table heading, the
 //! quantity (for the unit label) and the table format, and reads its cell from the row.
 
+pub mod crack;
 pub mod evolve;
 pub mod fatigue;
 pub mod march;

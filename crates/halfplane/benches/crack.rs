@@ -1,0 +1,71 @@
+//! Will the crack grow (issue 21): one crack length over a 120-increment steady cycle (assembly,
+//! the uncracked stress at the collocation points of every increment, face contact through the
+//! cycle), and a whole 30-length analysis including the march.
+//! Run: `cargo bench -p halfplane --bench crack`.
+
+use divan::black_box;
+use halfplane::crack::{self, CrackOptions, CrackSolver, Position};
+use halfplane::fatigue::FatigueConstants;
+use halfplane::history::{History, Ramp};
+use halfplane::march::MarchOptions;
+use halfplane::{reference, stress, LoadPoint};
+
+fn main() {
+    divan::main();
+}
+
+/// The fatigue example's cycle with 60 increments per half: 120 per cycle.
+fn history() -> History {
+    History::in_phase(
+        LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
+        LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
+        2,
+        60,
+        Ramp::NormalFirst,
+        10,
+    )
+    .unwrap()
+}
+
+fn options() -> MarchOptions {
+    MarchOptions::default().with_cells(400).unwrap()
+}
+
+/// One length (0.05 mm at the trailing edge, face friction 0.3) over the 120 kept increments.
+#[divan::bench(args = [0.0, 0.3], sample_count = 5, sample_size = 1)]
+fn one_length_120_increments(b: divan::Bencher, friction: f64) {
+    let h = history();
+    let steps: Vec<usize> = (h.loads().len() - 119..=h.loads().len()).collect();
+    let contact = reference::hertz();
+    let kept = stress::marched(&contact, &h, &options(), &steps).unwrap();
+    let a = kept[0].half_width;
+    let c = crack::Crack::new(-a, 0.0, 0.05).unwrap();
+    b.bench(|| {
+        let s = CrackSolver::new(&c, &contact.material, 40).unwrap();
+        let loads: Vec<(Vec<f64>, Vec<f64>)> = kept
+            .iter()
+            .map(|k| {
+                let f = stress::field(&k.traction, k.load.bulk(), &contact.material, s.x(), s.z())
+                    .unwrap();
+                (0..f.len())
+                    .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
+                    .unzip()
+            })
+            .collect();
+        black_box(s.cycle(&loads, friction).unwrap())
+    });
+}
+
+/// `crack::analyse` over 30 lengths, march included.
+#[divan::bench(sample_count = 3, sample_size = 1)]
+fn analyse_30_lengths(b: divan::Bencher) {
+    let h = history();
+    let constants = FatigueConstants::default()
+        .with_threshold(160.0)
+        .and_then(|c| c.with_endurance_range(700.0))
+        .unwrap();
+    let lengths: Vec<f64> = (0..30).map(|i| 0.002 * 1.19f64.powi(i)).collect();
+    let opts = CrackOptions::new(Position::LeftEdge, 0.0, lengths, 0.0).unwrap();
+    let contact = reference::hertz();
+    b.bench(|| black_box(crack::analyse(&contact, &h, &options(), &constants, &opts).unwrap()));
+}

@@ -1,0 +1,256 @@
+//! The crack's influence matrices and the open-crack solve: the distributed dislocation
+//! technique (Hills et al. 1996) with the half-plane kernel of `kernel.rs` and the rule of
+//! `quadrature.rs`.
+//!
+//! Unknowns: the densities of glide (`b1`, along `e1`, mouth to tip) and climb (`b2`, along
+//! `e2`, a quarter turn from `e1` towards `+z` from `+x`) dislocations, written
+//! `A b_j = w(t) psi_j(t)` (`A` of `kernel.rs`). Equations: at each collocation point the
+//! traction `s22`, `s12` (frame `e1`, `e2`) of the uncracked stress plus the dislocations'
+//! vanishes (open faces). Opening and slip are `delta_j(s) = integral_s^l b_j`, the displacement
+//! of the `+e2` face less that of the `-e2` face (positive opening under tension).
+//! `K_I = pi sqrt(2 pi l) psi_2(1)`: a Griffith crack's density near its tip is
+//! `b_2 = K_I/(A pi sqrt(2 pi r))` at distance `r` (the Griffith crack under tension `sigma` has
+//! `b_2 = sigma xi/(A pi sqrt(a^2 - xi^2))` with the kernel's `A/(s - xi)` on its line, and
+//! `K_I = sigma sqrt(pi a)`), and `sqrt(l - xi) w(t) -> sqrt(l)` at the tip. `K_II = -pi sqrt(2 pi l) psi_1(1)`: the same with
+//! the shear `tau` on the normal `n = -e2` of the module doc of [`super`].
+
+use super::kernel::{dislocation_stress, C};
+use super::quadrature::Rule;
+use super::Crack;
+use crate::error::{Error, Result};
+use crate::material::Material;
+
+/// Fewest and most quadrature points per component.
+pub const MIN_POINTS: usize = 4;
+/// See [`MIN_POINTS`]; the dense system has `2 x points` unknowns.
+pub const MAX_POINTS: usize = 400;
+
+/// Stress intensity factors at the tip (stress times square root of length).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TipFactors {
+    /// Mode I.
+    pub k1: f64,
+    /// Mode II (sign of the module doc of [`super`]).
+    pub k2: f64,
+}
+
+/// One crack assembled: the influence of the densities on the tractions and on the face
+/// displacements at the collocation points.
+#[derive(Debug, Clone)]
+pub struct CrackSolver {
+    pub(super) crack: Crack,
+    pub(super) n: usize,
+    /// `A = 2 mu/(pi (kappa + 1)) = E/(4 pi (1 - nu^2))`.
+    pub(super) a: f64,
+    /// Rows `s22` at `k` then `s12` at `k`; columns `psi_1` then `psi_2` (row-major, 2n x 2n).
+    pub(super) influence: Vec<f64>,
+    /// `tail[k][i] = (l/2) integral_{u_k}^1 w L_i`: `A delta_j(s_k) = sum_i tail[k][i] psi_j,i`.
+    pub(super) tail: Vec<Vec<f64>>,
+    /// The Lagrange basis at the tip `t = 1`.
+    pub(super) at_tip: Vec<f64>,
+    /// Collocation points (body coordinates) and their distance from the mouth.
+    x: Vec<f64>,
+    z: Vec<f64>,
+    s: Vec<f64>,
+    pub(super) open: Lu,
+}
+
+impl CrackSolver {
+    /// Assembles `crack` in `material` with `points` quadrature points per component
+    /// ([`MIN_POINTS`] to [`MAX_POINTS`]).
+    pub fn new(crack: &Crack, material: &Material, points: usize) -> Result<Self> {
+        if !(MIN_POINTS..=MAX_POINTS).contains(&points) {
+            return Err(Error::InvalidCount {
+                field: "crack.points".into(),
+                value: points as u64,
+                min: MIN_POINTS as u64,
+                max: MAX_POINTS as u64,
+            });
+        }
+        let n = points;
+        let rule = Rule::new(n)?;
+        let l = crack.length;
+        let (e1, e2) = crack.frame();
+        let along = C::new(e1[0], e1[1]);
+        let at = |s: f64| C::new(s * e1[0], s * e1[1]); // relative to the mouth
+        let xi: Vec<f64> = rule.nodes.iter().map(|t| 0.5 * l * (1.0 + t)).collect();
+        let s: Vec<f64> = rule
+            .collocation
+            .iter()
+            .map(|u| 0.5 * l * (1.0 + u))
+            .collect();
+        let mut influence = vec![0.0; 4 * n * n];
+        for (k, &sk) in s.iter().enumerate() {
+            for (i, &xii) in xi.iter().enumerate() {
+                let scale = 0.5 * l * rule.weights[i];
+                for (j, b) in [along, C::new(e2[0], e2[1])].into_iter().enumerate() {
+                    let st = dislocation_stress(at(sk), at(xii), b);
+                    let [s22, s12] = resolve(st, e1, e2);
+                    influence[k * 2 * n + j * n + i] = scale * s22;
+                    influence[(n + k) * 2 * n + j * n + i] = scale * s12;
+                }
+            }
+        }
+        let tail = rule
+            .collocation
+            .iter()
+            .map(|&u| rule.tail_integrals(u).iter().map(|v| 0.5 * l * v).collect())
+            .collect();
+        let open = Lu::factor(influence.clone(), 2 * n).ok_or(Error::NoConvergence {
+            what: "the crack's influence matrix (singular)",
+            iterations: 0,
+            last_step: f64::NAN,
+        })?;
+        let nu = material.poisson_ratio();
+        Ok(Self {
+            crack: *crack,
+            n,
+            a: material.youngs_modulus() / (4.0 * std::f64::consts::PI * (1.0 - nu * nu)),
+            influence,
+            tail,
+            at_tip: rule.basis(1.0),
+            x: s.iter().map(|&si| crack.mouth + si * e1[0]).collect(),
+            z: s.iter().map(|&si| si * e1[1]).collect(),
+            s,
+            open,
+        })
+    }
+
+    /// The crack.
+    pub fn crack(&self) -> &Crack {
+        &self.crack
+    }
+
+    /// The collocation points' `x` (body coordinates of [`crate::stress`]), tip first.
+    pub fn x(&self) -> &[f64] {
+        &self.x
+    }
+
+    /// The collocation points' depths `z`, tip first.
+    pub fn z(&self) -> &[f64] {
+        &self.z
+    }
+
+    /// The collocation points' distances from the mouth along the crack, tip first.
+    pub fn distances(&self) -> &[f64] {
+        &self.s
+    }
+
+    /// The normal stress `s_nn` and the shear stress `tau = e_s . s . n` on the crack line from
+    /// the stress components `(sxx, szz, sxz)` (the frame of the module doc of [`super`]).
+    pub fn resolve(&self, sxx: f64, szz: f64, sxz: f64) -> (f64, f64) {
+        let (e1, e2) = self.crack.frame();
+        let [s22, s12] = resolve([sxx, szz, sxz], e1, e2);
+        (s22, -s12)
+    }
+
+    /// The tip factors of the open crack whose faces carry no traction, given the uncracked
+    /// normal stress `normal` and shear stress `shear` at the collocation points (as
+    /// [`Self::resolve`] gives them), with no face contact: `K_I` may come out negative
+    /// (interpenetration; see [`Self::cycle`] for the contact solution). Errors: lengths not
+    /// equal to the number of points, or values not finite.
+    pub fn open(&self, normal: &[f64], shear: &[f64]) -> Result<TipFactors> {
+        self.check_loads(normal, shear)?;
+        let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
+        rhs.extend_from_slice(shear); // s12 = -tau
+        self.open.solve(&mut rhs);
+        Ok(self.tip(&rhs))
+    }
+
+    pub(super) fn check_loads(&self, normal: &[f64], shear: &[f64]) -> Result<()> {
+        for (field, v) in [
+            ("crack normal stress", normal),
+            ("crack shear stress", shear),
+        ] {
+            if v.len() != self.n {
+                return Err(Error::InvalidCount {
+                    field: format!("{field} values"),
+                    value: v.len() as u64,
+                    min: self.n as u64,
+                    max: self.n as u64,
+                });
+            }
+            if let Some(bad) = v.iter().find(|x| !x.is_finite()) {
+                return Err(Error::InvalidInput {
+                    field: field.into(),
+                    value: *bad,
+                    valid: "a finite stress at every collocation point",
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// `K_I`, `K_II` from the densities `psi` (`psi_1` then `psi_2`).
+    pub(super) fn tip(&self, psi: &[f64]) -> TipFactors {
+        let n = self.n;
+        let at = |j: usize| -> f64 { (0..n).map(|i| self.at_tip[i] * psi[j * n + i]).sum() };
+        let c = std::f64::consts::PI * (2.0 * std::f64::consts::PI * self.crack.length).sqrt();
+        TipFactors {
+            k1: c * at(1),
+            k2: -c * at(0),
+        }
+    }
+}
+
+/// `[s22, s12]` of `[sxx, szz, sxz]` in the frame `(e1, e2)` (unit vectors in `(x, z)`).
+fn resolve(st: [f64; 3], e1: [f64; 2], e2: [f64; 2]) -> [f64; 2] {
+    let [sxx, szz, sxz] = st;
+    let s22 = e2[0] * e2[0] * sxx + 2.0 * e2[0] * e2[1] * sxz + e2[1] * e2[1] * szz;
+    let s12 = e1[0] * e2[0] * sxx + (e1[0] * e2[1] + e1[1] * e2[0]) * sxz + e1[1] * e2[1] * szz;
+    [s22, s12]
+}
+
+/// A dense LU factorisation with partial pivoting (Golub and Van Loan, *Matrix Computations*,
+/// algorithm 3.4.1).
+#[derive(Debug, Clone)]
+pub(super) struct Lu {
+    lu: Vec<f64>,
+    piv: Vec<usize>,
+    n: usize,
+}
+
+impl Lu {
+    /// Factors the row-major `n x n` matrix `a`; `None` if a pivot is zero or not finite.
+    pub fn factor(mut a: Vec<f64>, n: usize) -> Option<Self> {
+        let mut piv: Vec<usize> = (0..n).collect();
+        for c in 0..n {
+            let p = (c..n).max_by(|&i, &j| a[i * n + c].abs().total_cmp(&a[j * n + c].abs()))?;
+            let pivot = a[p * n + c];
+            if pivot == 0.0 || !pivot.is_finite() {
+                return None;
+            }
+            if p != c {
+                for k in 0..n {
+                    a.swap(p * n + k, c * n + k);
+                }
+                piv.swap(p, c);
+            }
+            for r in c + 1..n {
+                let f = a[r * n + c] / pivot;
+                a[r * n + c] = f;
+                if f != 0.0 {
+                    for k in c + 1..n {
+                        a[r * n + k] -= f * a[c * n + k];
+                    }
+                }
+            }
+        }
+        Some(Self { lu: a, piv, n })
+    }
+
+    /// Solves in place.
+    pub fn solve(&self, b: &mut [f64]) {
+        let n = self.n;
+        let mut x: Vec<f64> = self.piv.iter().map(|&p| b[p]).collect();
+        for r in 0..n {
+            let s: f64 = (0..r).map(|k| self.lu[r * n + k] * x[k]).sum();
+            x[r] -= s;
+        }
+        for r in (0..n).rev() {
+            let s: f64 = (r + 1..n).map(|k| self.lu[r * n + k] * x[k]).sum();
+            x[r] = (x[r] - s) / self.lu[r * n + r];
+        }
+        b.copy_from_slice(&x);
+    }
+}

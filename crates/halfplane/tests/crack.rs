@@ -1,0 +1,323 @@
+//! The crack module against independent references (`docs/crack.md`): the edge crack's exact
+//! factor, power-law face loads, symmetry of inclined cracks, closed faces with and without
+//! friction against the open solution under the reduced shear, and convergence in points.
+
+use halfplane::crack::{Crack, CrackSolver, FaceState};
+use halfplane::Material;
+use std::f64::consts::PI;
+
+/// Koiter (1965), Wigglesworth (1957): an edge crack normal to the surface of a half-plane under
+/// uniform tension has `K_I = 1.121522 sigma sqrt(pi l)`.
+const EDGE: f64 = 1.121_522;
+
+fn steel() -> Material {
+    Material::new(200_000.0, 0.3).unwrap()
+}
+
+fn solver(angle_degrees: f64, points: usize) -> CrackSolver {
+    let crack = Crack::new(0.25, angle_degrees.to_radians(), 0.01).unwrap();
+    CrackSolver::new(&crack, &steel(), points).unwrap()
+}
+
+/// `(K_I, K_II)/(sqrt(pi l))` of the open crack under face loads `(normal, shear)(s/l)`.
+fn factors(s: &CrackSolver, normal: impl Fn(f64) -> f64, shear: impl Fn(f64) -> f64) -> (f64, f64) {
+    let l = s.crack().length();
+    let n: Vec<f64> = s.distances().iter().map(|d| normal(d / l)).collect();
+    let t: Vec<f64> = s.distances().iter().map(|d| shear(d / l)).collect();
+    let k = s.open(&n, &t).unwrap();
+    let f = (PI * l).sqrt();
+    (k.k1 / f, k.k2 / f)
+}
+
+#[test]
+fn edge_crack_under_uniform_tension_within_0_1_percent() {
+    // 40 points (the default) give 2e-4 relative; the issue asks 0.1%.
+    let (f1, f2) = factors(&solver(0.0, 40), |_| 1.0, |_| 0.0);
+    assert!((f1 / EDGE - 1.0).abs() < 1e-3, "{f1}");
+    assert!(f2.abs() < 1e-12, "{f2}");
+}
+
+#[test]
+fn convergence_in_quadrature_points_is_second_order() {
+    // The error against the exact factor falls about fourfold per doubling (the density is
+    // not smooth at the mouth in the rule's variable, so the rule is not spectral here).
+    let mut errors = Vec::new();
+    for n in [10, 20, 40, 80, 160] {
+        let (f1, _) = factors(&solver(0.0, n), |_| 1.0, |_| 0.0);
+        errors.push((f1 / EDGE - 1.0).abs());
+    }
+    for w in errors.windows(2) {
+        let ratio = w[0] / w[1];
+        assert!((3.0..5.0).contains(&ratio), "{errors:?}");
+    }
+    assert!(errors[4] < 1e-4, "{errors:?}");
+}
+
+#[test]
+fn uniform_face_shear_on_a_normal_crack() {
+    // Mode II of the edge crack under uniform face shear has the same factor 1.1215 (the normal
+    // crack's two modes decouple by symmetry and obey the same kernel on the crack line).
+    let (f1, f2) = factors(&solver(0.0, 80), |_| 0.0, |_| 1.0);
+    assert!(f1.abs() < 1e-12, "{f1}");
+    assert!((f2 / EDGE - 1.0).abs() < 1e-3, "{f2}");
+}
+
+#[test]
+fn power_law_face_loads() {
+    // sigma (s/l)^k on the faces, K_I/(sigma sqrt(pi l)). Superposition checks the linear
+    // pair against the uniform load: the increasing and decreasing linear loads add up to it.
+    let s = solver(0.0, 80);
+    let (up, _) = factors(&s, |r| r, |_| 0.0);
+    let (down, _) = factors(&s, |r| 1.0 - r, |_| 0.0);
+    let (uniform, _) = factors(&s, |_| 1.0, |_| 0.0);
+    assert!((up + down - uniform).abs() < 1e-12);
+    println!("linear increasing {up:.5}, decreasing {down:.5}");
+    // Tada, Paris and Irwin: 0.683 and 0.439 (three digits).
+    assert!((up / 0.683 - 1.0).abs() < 2e-3, "{up}");
+    assert!((down / 0.439 - 1.0).abs() < 3e-3, "{down}");
+}
+
+#[test]
+fn inclined_cracks_mirror() {
+    // The mirror image about the normal through the mouth: +angle under the same face loads
+    // gives the same K_I and the opposite K_II... with the shear load mirrored too. Under
+    // normal face load only, K_II changes sign, K_I does not.
+    for angle in [15.0, 30.0, 45.0, 60.0] {
+        let (a1, a2) = factors(&solver(angle, 60), |_| 1.0, |_| 0.0);
+        let (b1, b2) = factors(&solver(-angle, 60), |_| 1.0, |_| 0.0);
+        println!("{angle}: F_I {a1:.5} F_II {a2:.5}");
+        assert!(
+            (a1 - b1).abs() < 1e-10 && (a2 + b2).abs() < 1e-10,
+            "{a1} {b1} {a2} {b2}"
+        );
+        assert!(a2.abs() > 1e-3, "inclined cracks couple the modes");
+    }
+}
+
+/// Uniform face loads `(normal, shear)` at every point, per increment.
+fn uniform(s: &CrackSolver, history: &[(f64, f64)]) -> Vec<(Vec<f64>, Vec<f64>)> {
+    let n = s.distances().len();
+    history
+        .iter()
+        .map(|&(p, t)| (vec![p; n], vec![t; n]))
+        .collect()
+}
+
+#[test]
+fn a_compressed_crack_closes_with_k1_zero_and_no_interpenetration() {
+    let s = solver(0.0, 40);
+    let l = s.crack().length();
+    for f in [0.0, 0.3] {
+        let out = s
+            .cycle(&uniform(&s, &[(-100.0, 0.0), (-50.0, 0.0)]), f)
+            .unwrap();
+        for inc in &out {
+            assert_eq!(inc.factors.k1, 0.0);
+            assert!(inc.factors.k2.abs() < 1e-9 * 100.0 * l.sqrt());
+            assert!(inc.states.iter().all(|s| *s != FaceState::Open));
+            let e = steel();
+            let scale = 100.0 * l / e.youngs_modulus();
+            assert!(
+                inc.opening.iter().all(|g| g.abs() < 1e-8 * scale),
+                "{:?}",
+                inc.opening
+            );
+            // The contact pressure is the applied compression (uniform load, faces closed).
+            assert!(inc.normal.iter().all(|p| *p < 0.0));
+        }
+    }
+}
+
+#[test]
+fn closed_faces_slip_under_the_reduced_shear() {
+    // Uniform compression p and shear tau > f p: every point slips and carries f p, so K_II is
+    // that of the open crack under tau - f p (a second route through the open solve).
+    let s = solver(0.0, 40);
+    let (p, tau, f) = (100.0, 80.0, 0.5);
+    let out = s.cycle(&uniform(&s, &[(-p, tau)]), f).unwrap();
+    let n = s.distances().len();
+    let open = s.open(&vec![0.0; n], &vec![tau - f * p; n]).unwrap();
+    let k = out[0].factors;
+    assert_eq!(k.k1, 0.0);
+    assert!((k.k2 / open.k2 - 1.0).abs() < 1e-9, "{} {}", k.k2, open.k2);
+    for (t, q) in out[0].shear.iter().zip(&out[0].normal) {
+        assert!((t.abs() - f * q.abs()).abs() < 1e-6 * p, "{t} {q}");
+    }
+}
+
+#[test]
+fn reversed_shear_under_friction_gives_the_stick_slip_range() {
+    // Constant compression p, shear tau from +ta to -ta and back: the faces slip forward, stick
+    // for a change of 2 f p after each reversal, then slip back, so
+    // dK_II = 2 (ta - f p) F sqrt(pi l) for ta > f p, and 0 when friction holds them (ta < f p).
+    let s = solver(0.0, 40);
+    let (p, ta) = (100.0, 60.0);
+    let steps: Vec<(f64, f64)> = (0..=40)
+        .map(|i| (-p, ta * (2.0 * PI * i as f64 / 40.0).cos()))
+        .collect();
+    let n = s.distances().len();
+    let unit = s.open(&vec![0.0; n], &vec![1.0; n]).unwrap().k2;
+    for f in [0.0, 0.2, 0.4, 0.7, 5.0] {
+        let out = s.cycle(&uniform(&s, &steps), f).unwrap();
+        let (lo, hi) = out.iter().fold((f64::MAX, f64::MIN), |(lo, hi), o| {
+            (lo.min(o.factors.k2), hi.max(o.factors.k2))
+        });
+        let expect = 2.0 * (ta - f * p).max(0.0) * unit;
+        println!("f {f}: dK_II {:.6} expected {expect:.6}", hi - lo);
+        assert!(
+            ((hi - lo) - expect).abs() < 1e-6 * ta * unit,
+            "{f}: {} {expect}",
+            hi - lo
+        );
+        for o in &out {
+            assert_eq!(o.factors.k1, 0.0);
+            for (t, q) in o.shear.iter().zip(&o.normal) {
+                assert!(*q <= 0.0 && t.abs() <= f * q.abs() + 1e-6 * p, "{t} {q}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_crack_under_bending_closes_near_the_tip_only() {
+    // Tension at the surface falling to compression at depth: the faces near the tip close,
+    // K_I = 0, and the open part opens; no point interpenetrates.
+    let s = solver(0.0, 40);
+    let l = s.crack().length();
+    let n: Vec<f64> = s
+        .distances()
+        .iter()
+        .map(|d| 100.0 * (1.0 - 3.0 * d / l))
+        .collect();
+    let out = s.cycle(&[(n, vec![0.0; 40])], 0.0).unwrap();
+    let inc = &out[0];
+    assert_eq!(inc.factors.k1, 0.0);
+    assert_eq!(
+        inc.states[0],
+        FaceState::Slip(1),
+        "tip point closed (f = 0)"
+    );
+    assert_eq!(
+        *inc.states.last().unwrap(),
+        FaceState::Open,
+        "mouth point open"
+    );
+    let scale = 100.0 * l / 200_000.0;
+    assert!(
+        inc.opening.iter().all(|g| *g > -1e-8 * scale),
+        "{:?}",
+        inc.opening
+    );
+    assert!(inc.opening.iter().any(|g| *g > 1e-3 * scale));
+}
+
+mod under_the_contact {
+    use super::EDGE;
+    use halfplane::crack::{self, CrackOptions, Position, Verdict};
+    use halfplane::fatigue::FatigueConstants;
+    use halfplane::history::{History, Ramp};
+    use halfplane::march::MarchOptions;
+    use halfplane::{reference, LoadPoint};
+    use std::f64::consts::PI;
+
+    fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
+        History::in_phase(
+            LoadPoint::new("point1", 1000.0, -q, -bulk).unwrap(),
+            LoadPoint::new("point2", 1000.0, q, bulk).unwrap(),
+            2,
+            steps_per_half,
+            Ramp::NormalFirst,
+            10,
+        )
+        .unwrap()
+    }
+
+    fn constants() -> FatigueConstants {
+        FatigueConstants::default()
+            .with_threshold(160.0)
+            .and_then(|c| c.with_endurance_range(700.0))
+            .unwrap()
+    }
+
+    fn options() -> MarchOptions {
+        MarchOptions::default().with_cells(200).unwrap()
+    }
+
+    #[test]
+    fn far_from_the_contact_only_the_bulk_tension_acts() {
+        // 1e5 from the contact the contact's own stress is below 1e-4 of the bulk tension
+        // (Flamant: the surface sxx of the normal load vanishes outside it, the shear load's falls
+        // as 2Q/(pi x)): K_I follows the edge crack under the bulk tension while it pulls, and is
+        // zero while it pushes (the faces close).
+        let l = 0.05;
+        let opts = CrackOptions::new(Position::At(1e5), 0.0, vec![l], 0.0).unwrap();
+        let h = history(300.0, 60.0, 10);
+        let r = crack::analyse(&reference::hertz(), &h, &options(), &constants(), &opts).unwrap();
+        let row = &r.rows[0];
+        let expect = EDGE * 60.0 * (PI * l).sqrt();
+        assert!(
+            (row.k1_max / expect - 1.0).abs() < 1e-3,
+            "{} {expect}",
+            row.k1_max
+        );
+        assert_eq!(row.k1_min, 0.0);
+        assert!(row.k2_max.abs() < 1e-3 * expect && row.k2_min.abs() < 1e-3 * expect);
+        assert!((row.delta_k1 - row.k1_max).abs() < 1e-12);
+    }
+
+    #[test]
+    fn mirror_image_under_reversed_shear() {
+        // x -> -x with Q and the crack's angle reversed: the same K_I, K_II of opposite sign.
+        let c = constants();
+        let run = |pos: Position, angle: f64, q: f64| {
+            let opts = CrackOptions::new(pos, angle, vec![0.02, 0.08], 0.3).unwrap();
+            crack::analyse(
+                &reference::hertz(),
+                &history(q, 0.0, 10),
+                &options(),
+                &c,
+                &opts,
+            )
+            .unwrap()
+        };
+        let a = run(Position::RightEdge, 20.0, 300.0);
+        let b = run(Position::LeftEdge, -20.0, -300.0);
+        assert!((a.mouth + b.mouth).abs() < 1e-12);
+        for (ra, rb) in a.rows.iter().zip(&b.rows) {
+            let scale = ra.delta_k_eff.max(1e-9);
+            assert!(
+                (ra.k1_max - rb.k1_max).abs() < 1e-6 * scale,
+                "{ra:?} {rb:?}"
+            );
+            assert!(
+                (ra.k2_max + rb.k2_min).abs() < 1e-6 * scale,
+                "{ra:?} {rb:?}"
+            );
+            assert!((ra.delta_k_eff - rb.delta_k_eff).abs() < 1e-6 * scale);
+        }
+    }
+
+    #[test]
+    fn the_example_cycle_and_its_verdict() {
+        let lengths: Vec<f64> = (0..12).map(|i| 0.002 * 1.6f64.powi(i)).collect();
+        let opts = CrackOptions::new(Position::LargerRange, 0.0, lengths, 0.0).unwrap();
+        let h = history(300.0, 60.0, 30);
+        let r = crack::analyse(&reference::hertz(), &h, &options(), &constants(), &opts).unwrap();
+        for row in &r.rows {
+            println!(
+                "{:.5} K1 [{:.2}, {:.2}] K2 [{:.2}, {:.2}] dKeff {:.2} th {:.2}",
+                row.length,
+                row.k1_min,
+                row.k1_max,
+                row.k2_min,
+                row.k2_max,
+                row.delta_k_eff,
+                row.threshold
+            );
+            assert!(row.k1_min >= 0.0);
+        }
+        println!("{:?} {:?} mouth {}", r.verdict, r.arrest_length, r.mouth);
+        let (v, l) = Verdict::of(&r.rows);
+        assert_eq!((v, l), (r.verdict, r.arrest_length));
+    }
+}
