@@ -1,14 +1,15 @@
 //! `halfplane march`: numerical time marching through the case's load history.
 
 use crate::args::{Format, MarchArgs};
+use crate::limits;
 use crate::output::emit;
+use crate::progress::Progress;
 use crate::report::march::MarchReport;
 use crate::units::Units;
 use anyhow::{anyhow, Result};
 use halfplane::history::History;
 use halfplane::march::{self, Fields, MarchOptions, MarchResult};
 use halfplane::Contact;
-use indicatif::{ProgressBar, ProgressStyle};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -30,12 +31,25 @@ pub struct MarchConfig {
 }
 
 impl MarchConfig {
-    /// Reads the case (it must have a `[history]`) and applies `--cells`.
+    /// Reads the case (it must have a `[history]`), applies `--cells` and, unless
+    /// `--no-size-limit`, refuses a march estimated to be too large (`crate::limits`).
     pub fn resolve(args: &MarchArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
+        let history = case.history()?;
+        let options = case.solver_with_cells(args.cells)?;
+        if !args.no_size_limit {
+            let field = match args.cells {
+                Some(n) => format!("--cells {n}"),
+                None => format!("solver.cells = {}", options.cells()),
+            };
+            limits::check_march(&history, &options, &field)?;
+            if args.fields.is_some() {
+                limits::check_fields_files(&history, &options, &field)?;
+            }
+        }
         Ok(Self {
-            history: case.history()?,
-            options: case.solver_with_cells(args.cells)?,
+            history,
+            options,
             contact: case.contact,
             fields: args.fields.clone(),
             units: case.units,
@@ -44,7 +58,8 @@ impl MarchConfig {
     }
 }
 
-/// Marches through the history (with a progress bar on a terminal), writes the `--fields` files
+/// Marches through the history (with progress on stderr: a bar on a terminal, else a line every
+/// few seconds), writes the `--fields` files
 /// and prints the report.
 pub fn run(config: &MarchConfig) -> Result<()> {
     let fields = config.fields.as_deref();
@@ -56,12 +71,7 @@ pub fn run(config: &MarchConfig) -> Result<()> {
             )
         })?;
     }
-    let bar = ProgressBar::new(config.history.loads().len() as u64);
-    bar.set_style(
-        // The template is a constant that parses; a plain bar would do if it did not.
-        ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    let bar = Progress::new("march", "increments", config.history.loads().len() as u64);
     let mut write_error = None;
     let result = march::march(&config.contact, &config.history, &config.options, |r, f| {
         bar.inc(1);
@@ -71,7 +81,7 @@ pub fn run(config: &MarchConfig) -> Result<()> {
             }
         }
     });
-    bar.finish_and_clear();
+    bar.finish();
     let result = result?;
     if let Some(e) = write_error {
         return Err(e);
