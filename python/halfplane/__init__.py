@@ -101,7 +101,9 @@ def evolve(case: Case, points: int = 21) -> pd.DataFrame:
     return frame
 
 
-def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> MarchResult:
+def march(
+    case: Case, cells: Optional[int] = None, fields: bool = False, no_size_limit: bool = False
+) -> MarchResult:
     """Numerical time marching through the case's load history (``[history]``), as
     ``halfplane march``: any history (out of phase, harmonic, from rows), any profile.
 
@@ -122,10 +124,15 @@ def march(case: Case, cells: Optional[int] = None, fields: bool = False) -> Marc
 
     The GIL is released while marching; Ctrl-C interrupts the march between increments (it is
     checked every 50 ms) with KeyboardInterrupt.
+
+    A march estimated to take more than 8 hours of one core (cells² x increments x 5e-10 s), or
+    whose fields would need more than 4 GB, raises :class:`InputError` (``variant`` is
+    ``"TooLarge"``) before it starts, naming the estimate and the limit; ``no_size_limit=True``
+    runs it anyway.
     """
     if cells is not None:
         cells = _count("cells", cells)
-    out = _halfplane.march_report(case, cells, bool(fields))
+    out = _halfplane.march_report(case, cells, bool(fields), bool(no_size_limit))
     cycles = pd.DataFrame(
         out["cycles"], columns=["index", "energy", "max_slip_amplitude"]
     ).astype({"index": "int64", "energy": "float64", "max_slip_amplitude": "float64"})

@@ -3,7 +3,8 @@
 Every error the library can raise is a :class:`HalfplaneError`. Its message is the one the
 ``halfplane`` command prints and names the field (as the case file spells it, or the batch
 column) with its value and what would be valid. ``variant`` is the library's error variant
-(``"InvalidInput"``, ``"SlipReversesInHalf"``, ...) or None for case-file checks.
+(``"InvalidInput"``, ``"SlipReversesInHalf"``, ...), ``"TooLarge"`` for a run refused by its
+size estimate (see :func:`halfplane.march`), or None for case-file checks.
 """
 
 from __future__ import annotations

@@ -127,6 +127,10 @@ pub struct MarchArgs {
     /// Cells across the largest contact (overrides [solver] cells; default 400).
     #[arg(long)]
     pub cells: Option<usize>,
+    /// Run even when the march is estimated to take more than 8 hours of one core, or --fields
+    /// to write more than 100 GB (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
 }
 
 #[derive(Args, Debug)]
@@ -200,6 +204,10 @@ pub struct SweepArgs {
     /// Worker threads [default: HALFPLANE_NUM_THREADS if set, else every core].
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Run even when the sweep is estimated to take more than 8 hours of one core or to write
+    /// more than 100 GB (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
 }
 
 /// The figures `halfplane plot` draws, each with its own options.

@@ -8,7 +8,9 @@
 pub mod args;
 pub mod case;
 pub mod commands;
+pub mod limits;
 pub mod output;
+pub mod progress;
 pub mod report;
 pub mod sweep;
 pub mod units;

@@ -7,6 +7,7 @@ use crate::case::PyCase;
 use crate::errors;
 use halfplane::march::{self, Fields};
 use halfplane::{asymptotic, evolution, steady, Regime, SteadyOptions};
+use halfplane_cli::limits;
 use halfplane_cli::report::evolve::EvolveReport;
 use halfplane_cli::report::march::MarchReport;
 use halfplane_cli::report::steady::SteadyReport;
@@ -110,14 +111,16 @@ const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 /// `march --csv` (the steps), the cycles (index, energy, largest slip amplitude, as
 /// `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
 /// (as `march --json`), the cell centres and, with `fields`, the four fields of every increment
-/// as (increments, cells) arrays.
+/// as (increments, cells) arrays. Unless `no_size_limit`, a march estimated to take too long, or
+/// fields too large for memory, is refused before it starts (`halfplane_cli::limits`).
 #[pyfunction]
-#[pyo3(signature = (case, cells=None, fields=false))]
+#[pyo3(signature = (case, cells=None, fields=false, no_size_limit=false))]
 pub fn march_report<'py>(
     py: Python<'py>,
     case: &PyCase,
     cells: Option<usize>,
     fields: bool,
+    no_size_limit: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let case = &case.case;
     let (history, until_steady) = case
@@ -127,6 +130,18 @@ pub fn march_report<'py>(
     let options = case
         .solver_with_cells(cells)
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
+    if !no_size_limit {
+        let field = match cells {
+            Some(n) => format!("cells={n}"),
+            None => format!("solver.cells = {}", options.cells()),
+        };
+        let planned = limits::planned_increments(&history, until_steady.as_ref());
+        let checked = limits::check_march(planned, &options, &field).and_then(|()| match fields {
+            true => limits::check_fields_memory(planned, &options, &field),
+            false => Ok(()),
+        });
+        checked.map_err(|e| errors::too_large(py, &e))?;
+    }
     // Marched until steady, the fields grow past the history's one cycle as the march goes.
     let increments = history.loads().len();
     let mut recorded = match fields {

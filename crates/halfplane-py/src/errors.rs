@@ -109,6 +109,13 @@ pub fn from_library(py: Python<'_>, error: &Error) -> PyErr {
 /// A front-end error (case file, report) as its Python exception: the library error in its chain
 /// decides the class; an I/O error is `FileNotFoundError` or `OSError`; anything else is bad input
 /// (the case file's own checks). `hide` is removed from the message (a temporary directory).
+/// A run refused by its size estimate: an `InputError` whose variant is `"TooLarge"`, with the
+/// keyword that lifts the limit.
+pub fn too_large(py: Python<'_>, error: &halfplane_cli::limits::TooLarge) -> PyErr {
+    let message = format!("{error} (pass no_size_limit=True to run it anyway)");
+    exception(py, Kind::Input, &message, Some("TooLarge"))
+}
+
 pub fn from_anyhow(py: Python<'_>, error: &anyhow::Error, hide: Option<&str>) -> PyErr {
     let mut message = format!("{error:#}");
     if let Some(h) = hide {

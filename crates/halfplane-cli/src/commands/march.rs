@@ -1,14 +1,15 @@
 //! `halfplane march`: numerical time marching through the case's load history.
 
 use crate::args::{Format, MarchArgs};
+use crate::limits;
 use crate::output::emit;
+use crate::progress::Progress;
 use crate::report::march::MarchReport;
 use crate::units::Units;
 use anyhow::{anyhow, Result};
 use halfplane::history::{History, Steady};
 use halfplane::march::{self, Fields, MarchOptions, MarchResult};
 use halfplane::Contact;
-use indicatif::{ProgressBar, ProgressStyle};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -34,15 +35,28 @@ pub struct MarchConfig {
 }
 
 impl MarchConfig {
-    /// Reads the case (it must have a `[history]`) and applies `--cells`.
+    /// Reads the case (it must have a `[history]`), applies `--cells` and, unless
+    /// `--no-size-limit`, refuses a march estimated to be too large (`crate::limits`).
     pub fn resolve(args: &MarchArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
         let (history, until) = case.march_history()?;
+        let options = case.solver_with_cells(args.cells)?;
+        if !args.no_size_limit {
+            let field = match args.cells {
+                Some(n) => format!("--cells {n}"),
+                None => format!("solver.cells = {}", options.cells()),
+            };
+            let increments = limits::planned_increments(&history, until.as_ref());
+            limits::check_march(increments, &options, &field)?;
+            if args.fields.is_some() {
+                limits::check_fields_files(increments, &options, &field)?;
+            }
+        }
         Ok(Self {
             history,
             steady: case.steady(),
             until_steady: until.is_some(),
-            options: case.solver_with_cells(args.cells)?,
+            options,
             contact: case.contact,
             fields: args.fields.clone(),
             units: case.units,
@@ -51,7 +65,8 @@ impl MarchConfig {
     }
 }
 
-/// Marches through the history (with a progress bar on a terminal), writes the `--fields` files
+/// Marches through the history (with progress on stderr: a bar on a terminal, else a line every
+/// few seconds), writes the `--fields` files
 /// and prints the report.
 pub fn run(config: &MarchConfig) -> Result<()> {
     let fields = config.fields.as_deref();
@@ -63,17 +78,10 @@ pub fn run(config: &MarchConfig) -> Result<()> {
             )
         })?;
     }
-    // Marched until steady, the bar runs to max_cycles cycles (most marches end well before).
-    let planned = match (config.until_steady, config.history.cycles()) {
-        (true, Some(c)) => c.first_step() + config.steady.max_cycles() * c.steps_per_cycle(),
-        _ => config.history.loads().len(),
-    };
-    let bar = ProgressBar::new(planned as u64);
-    bar.set_style(
-        // The template is a constant that parses; a plain bar would do if it did not.
-        ProgressStyle::with_template("{bar:40} {pos}/{len} increments {elapsed}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    // Marched until steady, the count runs to max_cycles cycles (most marches end well before).
+    let steady = config.until_steady.then_some(&config.steady);
+    let planned = limits::planned_increments(&config.history, steady);
+    let bar = Progress::new("march", "increments", planned as u64);
     let mut write_error = None;
     let observer = |r: &march::StepReport, f: &Fields| {
         bar.inc(1);
@@ -93,7 +101,7 @@ pub fn run(config: &MarchConfig) -> Result<()> {
         ),
         false => march::march(&config.contact, &config.history, &config.options, observer),
     };
-    bar.finish_and_clear();
+    bar.finish();
     let result = result?;
     if let Some(e) = write_error {
         return Err(e);

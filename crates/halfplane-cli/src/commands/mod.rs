@@ -34,9 +34,18 @@ pub fn run(command: &Command) -> Result<()> {
 }
 
 /// What to do next when a load case is outside the steady-state analysis, chosen by the library's
-/// error variant (never by its text).
+/// error variant (never by its text), or when a run is refused as too large.
 pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
     use halfplane::Error;
+    if error
+        .chain()
+        .any(|e| e.downcast_ref::<crate::limits::TooLarge>().is_some())
+    {
+        return Some(
+            "make the run smaller (fewer cells, increments or rows, or --shard I/N for part of a \
+             sweep), or add --no-size-limit to run it anyway",
+        );
+    }
     match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
         Error::SlipReversesInHalf { .. }
         | Error::StickZoneOutsideContact { .. }

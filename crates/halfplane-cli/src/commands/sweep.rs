@@ -3,14 +3,16 @@
 
 use crate::args::SweepArgs;
 use crate::output::note;
-use crate::sweep::csv::CsvSink;
+use crate::progress::Progress;
+use crate::sweep::csv::{part_path, CsvSink};
+use crate::sweep::part;
+use crate::sweep::size;
 use crate::sweep::spec::{self, Analysis, Spec};
 use crate::sweep::template::Template;
 use crate::sweep::{Layout, RowSink};
 use anyhow::{anyhow, bail, Context, Result};
 use halfplane::batch::Batch;
 use halfplane::design;
-use indicatif::{ProgressBar, ProgressStyle};
 use std::ops::{ControlFlow, Range};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -102,6 +104,16 @@ impl SweepConfig {
         let (spec, template) = load(&args.spec)?;
         let (index, count) = args.shard.unwrap_or((1, 1));
         let rows = design::shard(spec.design.rows(), index, count)?;
+        if !args.no_size_limit {
+            let dir = args.spec.parent().unwrap_or(Path::new(""));
+            let run = size::Run {
+                rows: rows.end - rows.start,
+                shard: args.shard.is_some(),
+                format,
+                direct: template.is_direct(),
+            };
+            size::check(&spec, dir, run)?;
+        }
         let mut batch = Batch::new(args.threads)?;
         if spec.analysis == Analysis::March {
             batch = batch.with_chunk_rows(MARCH_CHUNK_ROWS)?;
@@ -128,16 +140,21 @@ impl SweepConfig {
 /// Runs the sweep into its output; says on stderr how many rows were written and how many failed.
 pub fn run(config: &SweepConfig) -> Result<()> {
     let layout = config.layout();
-    let failed = match config.format {
-        OutputFormat::Csv => run_into(CsvSink::create(&config.output, &layout)?, config)?,
+    let part = part_path(&config.output);
+    part::watch(&part);
+    let outcome = match config.format {
+        OutputFormat::Csv => {
+            CsvSink::create(&config.output, &layout).and_then(|sink| run_into(sink, config))
+        }
         #[cfg(feature = "parquet")]
-        OutputFormat::Parquet => run_into(
-            crate::sweep::parquet::ParquetSink::create(&config.output, &layout)?,
-            config,
-        )?,
+        OutputFormat::Parquet => {
+            crate::sweep::parquet::ParquetSink::create(&config.output, &layout)
+                .and_then(|sink| run_into(sink, config))
+        }
         #[cfg(not(feature = "parquet"))]
-        OutputFormat::Parquet => bail!("Parquet output needs the `parquet` feature"),
+        OutputFormat::Parquet => Err(anyhow!("Parquet output needs the `parquet` feature")),
     };
+    let failed = outcome.map_err(|e| part::abandon(&part, e))?;
     let rows = config.rows.end - config.rows.start;
     let failed = match failed {
         0 => String::new(),
@@ -156,13 +173,7 @@ pub fn run_into<S: RowSink>(mut sink: S, config: &SweepConfig) -> Result<u64> {
     let (first, rows) = (config.rows.start, config.rows.end - config.rows.start);
     let rows =
         usize::try_from(rows).map_err(|_| anyhow!("{rows} rows are too many for this machine"))?;
-    let bar = ProgressBar::new(rows as u64);
-    bar.set_style(
-        // The template is a constant that parses; a plain bar would do if it did not.
-        ProgressStyle::with_template("{bar:40} {pos}/{len} cases {elapsed} (eta {eta})")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
-    let march = config.spec.analysis == Analysis::March;
+    let bar = Progress::new("sweep", "rows", rows as u64);
     let failed = AtomicU64::new(0);
     let axes = config.spec.design.axes();
     let stopped = config.batch.run(
@@ -179,26 +190,20 @@ pub fn run_into<S: RowSink>(mut sink: S, config: &SweepConfig) -> Result<u64> {
             if !outcome.error.is_empty() {
                 failed.fetch_add(1, Ordering::Relaxed);
             }
-            if march {
-                bar.inc(1);
-            }
+            bar.inc(1);
             S::encode(&layout, &values, outcome)
         },
         |_, items| {
-            let n = items.len() as u64;
             if let Err(e) = sink.write(items) {
                 return ControlFlow::Break(e);
-            }
-            if !march {
-                bar.inc(n);
             }
             ControlFlow::Continue(())
         },
     )?;
-    bar.finish_and_clear();
+    bar.finish();
     if let Some(e) = stopped {
         return Err(e);
     }
-    sink.finish()?;
+    part::commit(|| sink.finish())?;
     Ok(failed.into_inner())
 }

@@ -10,7 +10,9 @@
 pub mod csv;
 #[cfg(feature = "parquet")]
 pub mod parquet;
+pub mod part;
 pub mod read;
+pub mod size;
 pub mod spec;
 pub mod template;
 

@@ -39,6 +39,12 @@ pub struct Spec {
     pub design: Design,
     /// What each row runs.
     pub analysis: Analysis,
+    /// The largest value each varied field takes (in the spec's order): the end of its range or
+    /// the largest listed value, for the size estimate of `sweep::size`.
+    pub largest: Vec<f64>,
+    /// What sets the number of rows, as the spec writes it (`sweep.samples = 1000`, or the
+    /// grid's counts), for messages about the sweep's size.
+    pub rows_from: String,
 }
 
 const MODES: &str = "\"grid\", \"random\" or \"latin-hypercube\"";
@@ -84,8 +90,8 @@ pub fn parse(text: &str) -> Result<Spec> {
             bail!("sweep.vary is empty: give at least one dotted path, e.g. \"friction.coefficient\" = [0.3, 0.6]")
         }
         Some(other) => bail!(
-            "sweep.vary must be a table [sweep.vary] of dotted paths, found a {}",
-            other.type_str()
+            "invalid sweep.vary = {other}: must be a table [sweep.vary] of dotted paths, each with \
+             its values, e.g. \"friction.coefficient\" = [0.3, 0.6]"
         ),
         None => bail!("missing section [sweep.vary]: give the dotted paths to vary, e.g. \"friction.coefficient\" = [0.3, 0.6]"),
     };
@@ -98,6 +104,7 @@ pub fn parse(text: &str) -> Result<Spec> {
         .map(|v| format!("sweep.vary.\"{}\"", v.path))
         .collect();
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let rows_from;
     let design = match mode {
         "grid" => {
             for key in ["samples", "seed"] {
@@ -110,6 +117,14 @@ pub fn parse(text: &str) -> Result<Spec> {
                 .zip(&names)
                 .map(|((_, v), name)| grid_axis(name, v))
                 .collect::<Result<Vec<_>>>()?;
+            let counts: Vec<String> = axes
+                .iter()
+                .map(|a| match a {
+                    GridAxis::List(v) => v.len().to_string(),
+                    GridAxis::Steps(_, n) => n.to_string(),
+                })
+                .collect();
+            rows_from = format!("the grid's {} rows (sweep.vary)", counts.join(" x "));
             Design::grid(&names, axes)?
         }
         "random" | "latin-hypercube" => {
@@ -124,6 +139,7 @@ pub fn parse(text: &str) -> Result<Spec> {
                 .zip(&names)
                 .map(|((_, v), name)| sampled_axis(name, v))
                 .collect::<Result<Vec<_>>>()?;
+            rows_from = format!("sweep.samples = {samples}");
             if mode == "random" {
                 Design::random(&names, axes, samples, seed)?
             } else {
@@ -132,12 +148,33 @@ pub fn parse(text: &str) -> Result<Spec> {
         }
         other => bail!("invalid sweep.mode = \"{other}\": must be {MODES}"),
     };
+    let largest = vary.values().map(largest).collect();
     Ok(Spec {
         case,
         varied,
         design,
         analysis,
+        largest,
+        rows_from,
     })
+}
+
+/// The largest value of a varied field's list or range (NaN when it has none).
+fn largest(value: &Value) -> f64 {
+    let of = |v: &Value| match v {
+        Value::Integer(i) => *i as f64,
+        Value::Float(f) => *f,
+        _ => f64::NAN,
+    };
+    match value {
+        Value::Array(values) => values.iter().map(of).fold(f64::NAN, f64::max),
+        Value::Table(t) => ["from", "to"]
+            .iter()
+            .filter_map(|k| t.get(*k))
+            .map(of)
+            .fold(f64::NAN, f64::max),
+        _ => f64::NAN,
+    }
 }
 
 /// Finds `path` in the case: it must name a number the case writes.
@@ -206,6 +243,12 @@ fn number(value: &Value, field: &str) -> Result<f64> {
 }
 
 fn list(name: &str, values: &[Value]) -> Result<Vec<f64>> {
+    if values.is_empty() {
+        bail!(
+            "{name} = [] is an empty list: give the values to take, e.g. {name} = [0.3, 0.6], or a \
+             range {{ from = 0.3, to = 0.6 }} (with count = ... in a grid)"
+        );
+    }
     values
         .iter()
         .enumerate()
@@ -352,6 +395,10 @@ cells = 200
             (
                 "\"profile.radius\" = { from = 1.0, to = 2.0 }",
                 "missing field sweep.vary.\"profile.radius\".count",
+            ),
+            (
+                "\"profile.radius\" = []",
+                "sweep.vary.\"profile.radius\" = [] is an empty list",
             ),
             (
                 "\"profile.radius\" = [\"big\"]",

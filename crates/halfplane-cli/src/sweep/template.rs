@@ -312,7 +312,7 @@ fn failed(error: String) -> Outcome {
 }
 
 /// The TOML value of a varied number: an integer where the case writes one.
-fn number(v: f64, integer: bool) -> Value {
+pub(super) fn number(v: f64, integer: bool) -> Value {
     if integer && v.abs() < 9e18 {
         Value::Integer(v as i64)
     } else {
@@ -321,7 +321,7 @@ fn number(v: f64, integer: bool) -> Value {
 }
 
 /// Writes `value` at `keys` (which the spec checked exist in the table).
-fn set(table: &mut Table, keys: &[String], value: Value) {
+pub(super) fn set(table: &mut Table, keys: &[String], value: Value) {
     let Some((last, parents)) = keys.split_last() else {
         return;
     };

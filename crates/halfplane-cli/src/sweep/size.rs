@@ -1,0 +1,120 @@
+//! How large a sweep is, estimated from its spec before the first row runs: the output it would
+//! write and the core time it would take, each checked against `crate::limits`.
+//!
+//! A march sweep's rows are bounded by its largest case: the whole-number fields it varies
+//! (`solver.cells`, `history.cycles`, steps) at the largest values they take, since cells and
+//! increments only grow with them.
+
+use super::spec::{Analysis, Spec};
+use super::template::{number, set};
+use crate::case;
+use crate::commands::sweep::OutputFormat;
+use crate::limits::{self, Quantity, TooLarge};
+use std::path::Path;
+
+/// Bytes of one number in a CSV row: the mean length of Rust's shortest round-trip form of
+/// computed values, with the comma (measured on the example sweeps; see README "Size limits").
+pub const CSV_NUMBER_BYTES: f64 = 20.0;
+/// Bytes of one number in Parquet (a Float64; Snappy does not shrink computed values).
+pub const PARQUET_NUMBER_BYTES: f64 = 8.0;
+
+/// The field that sets the number of rows, as the spec writes it.
+fn rows_field(spec: &Spec, rows: u64, shard: bool) -> String {
+    match shard {
+        true => format!("{rows} rows of this --shard, of {}", spec.rows_from),
+        false => spec.rows_from.clone(),
+    }
+}
+
+/// The estimated output bytes of `rows` rows.
+pub fn output_bytes(spec: &Spec, rows: u64, format: OutputFormat) -> f64 {
+    let mut numbers = spec.varied.len() + 10;
+    if spec.analysis == Analysis::March {
+        numbers += 5;
+    }
+    let per = match format {
+        OutputFormat::Csv => CSV_NUMBER_BYTES,
+        OutputFormat::Parquet => PARQUET_NUMBER_BYTES,
+    };
+    rows as f64 * numbers as f64 * per
+}
+
+/// The core time of one row: building its case and the steady analysis, plus the march of the
+/// largest case.
+fn row_seconds(spec: &Spec, dir: &Path, direct: bool) -> f64 {
+    if direct {
+        return limits::DIRECT_ROW_SECONDS;
+    }
+    if spec.analysis == Analysis::Steady {
+        return limits::REREAD_ROW_SECONDS;
+    }
+    let mut table = spec.case.clone();
+    for (varied, &v) in spec.varied.iter().zip(&spec.largest) {
+        if varied.integer && v.is_finite() {
+            set(&mut table, &varied.keys, number(v.round(), true));
+        }
+    }
+    // The largest case may be invalid (every such row then fails at once): fall back on the
+    // spec's own case, which `Template::new` checked.
+    let largest = toml::to_string(&table)
+        .ok()
+        .and_then(|t| case::parse(&t, dir).ok())
+        .or_else(|| {
+            toml::to_string(&spec.case)
+                .ok()
+                .and_then(|t| case::parse(&t, dir).ok())
+        });
+    let march = largest
+        .and_then(|c| {
+            let increments = c.history().ok()?.loads().len();
+            Some(limits::march_seconds(c.solver.cells(), increments))
+        })
+        .unwrap_or(0.0);
+    limits::REREAD_ROW_SECONDS + march
+}
+
+/// Where a sweep's rows go, and how its rows are solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Run {
+    /// Rows of this run (the shard's).
+    pub rows: u64,
+    /// Whether `--shard` picked them.
+    pub shard: bool,
+    /// The output format.
+    pub format: OutputFormat,
+    /// Whether the rows take the template's direct route.
+    pub direct: bool,
+}
+
+/// Refuses a sweep whose output or core time is estimated above the limits; `dir` is the spec's
+/// directory (for the case's CSV tables).
+pub fn check(spec: &Spec, dir: &Path, run: Run) -> Result<(), TooLarge> {
+    let Run {
+        rows,
+        shard,
+        format,
+        direct,
+    } = run;
+    let field = rows_field(spec, rows, shard);
+    let kind = match format {
+        OutputFormat::Csv => format!("{CSV_NUMBER_BYTES} bytes per CSV number"),
+        OutputFormat::Parquet => format!("{PARQUET_NUMBER_BYTES} bytes per Parquet number"),
+    };
+    limits::check(
+        field.clone(),
+        Quantity::Output,
+        output_bytes(spec, rows, format),
+        format!("{} rows at {kind}", limits::sci(rows as f64)),
+    )?;
+    let per_row = row_seconds(spec, dir, direct);
+    let basis = match spec.analysis {
+        Analysis::Steady => format!("{} rows at {} s each", limits::sci(rows as f64), per_row),
+        Analysis::March => format!(
+            "{} rows at {} each, the march of the largest case at {} s per cell² x increment",
+            limits::sci(rows as f64),
+            limits::duration(per_row),
+            limits::MARCH_SECONDS_PER_UNIT
+        ),
+    };
+    limits::check(field, Quantity::CoreTime, rows as f64 * per_row, basis)
+}
