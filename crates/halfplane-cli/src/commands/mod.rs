@@ -1,11 +1,13 @@
 //! The commands, one module each: a validated configuration resolved from the raw arguments
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
+#[cfg(feature = "plot")]
 pub mod design_map;
 pub mod evolve;
 pub mod fatigue;
 pub mod march;
 pub mod matching;
+#[cfg(feature = "plot")]
 pub mod plot;
 pub mod steady;
 pub mod stress;
@@ -13,6 +15,11 @@ pub mod sweep;
 
 use crate::args::{Command, PlotCommand};
 use anyhow::Result;
+
+/// Why `plot` fails in a build without figures, and how to get them.
+#[cfg(not(feature = "plot"))]
+const NO_PLOT: &str = "this halfplane was built without figures (--no-default-features); build \
+     it with --features plot (or without --no-default-features) to draw them";
 
 /// Resolves the command's configuration and runs it.
 pub fn run(command: &Command) -> Result<()> {
@@ -23,18 +30,28 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
         Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
+        #[cfg(feature = "plot")]
         Command::Plot(PlotCommand::DesignMap(a)) => {
             design_map::run(&design_map::DesignMapConfig::resolve(a)?)
         }
+        #[cfg(feature = "plot")]
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
+        #[cfg(not(feature = "plot"))]
+        Command::Plot(_) => anyhow::bail!(NO_PLOT),
         Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
     }
 }
 
 /// What to do next when a load case is outside the steady-state analysis, chosen by the library's
-/// error variant (never by its text).
-pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
+/// error variant (never by its text) and, for `match`, by the mode the command was run in (the
+/// hint offers the other one).
+pub fn hint(error: &anyhow::Error, command: &Command) -> Option<&'static str> {
     use halfplane::Error;
+    let exact = match command {
+        Command::Match(a) => a.test.exact,
+        Command::Plot(PlotCommand::Match(a)) => a.test.exact,
+        _ => false,
+    };
     match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
         Error::SlipReversesInHalf { .. }
         | Error::StickZoneOutsideContact { .. }
@@ -47,9 +64,18 @@ pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
             side: halfplane::matching::MatchSide::Test,
             ..
         }
+        | Error::MatchNotBracketed { .. } if exact => Some(
+            "choose another test geometry (for a Hertz test a different --radius gives another \
+             contact size at the same K_N) or the asymptotic match (the same command without \
+             --exact)",
+        ),
+        Error::NoValidMatch {
+            side: halfplane::matching::MatchSide::Test,
+            ..
+        }
         | Error::MatchNotBracketed { .. } => Some(
             "choose another test geometry (for a Hertz test a different --radius gives another \
-             contact size at the same K_N) or the other match mode (--exact)",
+             contact size at the same K_N) or the exact match (--exact)",
         ),
         _ => None,
     }
