@@ -122,7 +122,7 @@ pub fn march_report<'py>(
         .history()
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
     let options = case
-        .solver_with_cells(cells)
+        .solver_with_cells_named(cells, "cells")
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
     let increments = history.loads().len();
     let mut recorded = match fields {
