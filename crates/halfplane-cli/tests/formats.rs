@@ -126,6 +126,7 @@ fn steady_csv_is_the_json_in_one_row_of_fixed_columns() {
     }
 }
 
+#[cfg(feature = "plot")] // only the figure tests use it
 fn with_units(name: &str, units: &str) -> ScratchFile {
     let text = std::fs::read_to_string(examples().join("march-cycle.toml")).unwrap();
     let file = ScratchFile::new(scratch(name), "case.toml");

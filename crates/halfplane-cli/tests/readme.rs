@@ -15,6 +15,9 @@
 //! Example outputs: a fenced ```` ```text ```` block is the output of the first command of the
 //! `sh` block just before it (only prose between, no heading); with `| head -n N` it is the first
 //! N lines. Every other block (usage synopses, case files) is not a command and is skipped.
+//!
+//! The README draws figures, so this needs the `plot` feature (a default one).
+#![cfg(feature = "plot")]
 
 mod common;
 use common::stderr;
@@ -124,9 +127,12 @@ struct Example {
     expected: Option<String>,
 }
 
+/// The commands to run, one list per block, and the skipped lines with the reason.
+type Found = (Vec<Vec<Example>>, Vec<(usize, &'static str)>);
+
 /// The README's commands, one list per `sh` block (a block's commands run in order: a later one
 /// may read what an earlier one wrote), and the lines skipped with their reasons.
-fn examples(readme: &str) -> Result<(Vec<Vec<Example>>, Vec<(usize, &'static str)>), String> {
+fn examples(readme: &str) -> Result<Found, String> {
     let blocks = blocks(readme);
     let (mut runs, mut skipped) = (Vec::new(), Vec::new());
     for (k, b) in blocks.iter().enumerate().filter(|(_, b)| b.lang == "sh") {
@@ -254,7 +260,6 @@ fn check(root: &Path, e: &Example) {
 /// Every command the README shows runs as written (see the module's doc for what is checked).
 /// Pixels are not compared: they depend on font rasterisation; the size includes the legend
 /// strip, so it also changes when a legend moves between a corner and below the panels.
-#[cfg(feature = "plot")]
 #[test]
 fn every_readme_command_runs_as_written_and_prints_its_output_block() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");

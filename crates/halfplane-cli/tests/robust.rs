@@ -3,7 +3,6 @@
 
 mod common;
 use common::*;
-use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BASE: &str = REFERENCE_CASE;
@@ -228,8 +227,9 @@ fn a_full_disk_is_exit_2_with_a_message() {
     assert_eq!(o.status.code(), Some(0), "plot with a full stderr");
 }
 
+#[cfg(feature = "plot")] // only the figure tests use it
 #[cfg(unix)]
-fn link_to_dev_full(path: &Path) {
+fn link_to_dev_full(path: &std::path::Path) {
     std::os::unix::fs::symlink("/dev/full", path).unwrap();
 }
 
