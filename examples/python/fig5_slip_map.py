@@ -7,12 +7,13 @@ Each cycle runs from (P1, -dQ/2, dsigma/2) to (P2, dQ/2, -dsigma/2). Points the 
 analysis does not cover (slip reversing in a half, gross sliding) have an error and are left out,
 which breaks the curves with tension before the full-stick limit.
 
-Run: python examples/python/fig5_slip_map.py [-o figure5.png]
+Run: python examples/python/fig5_slip_map.py [-o FILE.png]  (default target/figure5-slip-map.png)
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import itertools
 
 import numpy as np
@@ -74,8 +75,10 @@ def plot(points: pd.DataFrame, output: str) -> None:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-o", "--output", default="figure5-slip-map.png")
+    # A scratch directory by default (target/, cargo's), so a run leaves the repository as it was.
+    parser.add_argument("-o", "--output", default="target/figure5-slip-map.png")
     args = parser.parse_args()
+    os.makedirs(os.path.dirname(args.output) or ".", exist_ok=True)
     points = slip_map()
     plot(points, args.output)
     print(f"wrote {args.output}: {len(points)} cycles, {int((points.error != '').sum())} outside the analysis")

@@ -134,3 +134,22 @@ def test_outside_the_analysis_and_missing_sections():
         halfplane.evolve(halfplane.Case(**REFERENCE), points=1)
     with pytest.raises(FileNotFoundError):
         halfplane.read_case(ROOT / "examples" / "no-such-case.toml")
+
+
+def test_messages_name_what_the_python_caller_wrote():
+    # History rows given as a list are rows of that list, not lines of the CSV file the case
+    # keeps them in ("history.file history.csv, line 3"); march's cells keyword is `cells`, not
+    # the command's --cells; 1e300 reads as 1e300.
+    rows = [[1000.0, 0.0, 0.0], [1000.0, 100.0, 0.0], [-5.0, 0.0, 0.0]]
+    with pytest.raises(halfplane.InputError) as raised:
+        halfplane.Case(**{**REFERENCE, "history": rows})
+    message = str(raised.value)
+    assert "history row 3" in message and "normal = -5" in message, message
+    assert "history.file" not in message and "line" not in message, message
+    case = halfplane.Case(**{**REFERENCE, "history": {"kind": "cycle", "cycles": 1, "steps_per_half": 5}})
+    with pytest.raises(halfplane.InputError) as raised:
+        halfplane.march(case, cells=3)
+    assert "invalid cells = 3" in str(raised.value) and "--cells" not in str(raised.value)
+    with pytest.raises(halfplane.InputError) as raised:
+        halfplane.Case(**{**REFERENCE, "youngs_modulus": 1e300})
+    assert "material.youngs_modulus = 1e300:" in str(raised.value), str(raised.value)

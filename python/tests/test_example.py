@@ -37,3 +37,15 @@ def test_the_script_draws_the_figure(tmp_path):
     )
     assert done.returncode == 0, done.stderr
     assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and output.stat().st_size > 20_000
+
+
+def test_the_script_writes_into_target_unless_told(tmp_path):
+    # Run from a copy of the layout: its default output must land in target/, never in the
+    # directory it runs from (it used to write figure5-slip-map.png into the repository root).
+    pytest.importorskip("matplotlib")
+    done = subprocess.run(
+        [sys.executable, str(SCRIPT)], capture_output=True, text=True, check=False, cwd=tmp_path
+    )
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["target"]
+    assert (tmp_path / "target" / "figure5-slip-map.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -40,3 +40,18 @@ def test_the_slurm_recipe_renders_a_job_script():
     finally:
         cluster.close()
     assert "#SBATCH" in script and "--nworkers 32" in script and "--nthreads 1" in script
+
+
+def test_every_other_python_example_runs_as_written(capsys):
+    # Every ```python block runs from the repository root, except the Slurm recipe (it needs a
+    # cluster; its job script is rendered above) and the first (run above, with its output).
+    blocks = [b for b in python_blocks()[1:] if "SLURMCluster" not in b]
+    assert blocks, "the README has more Python examples"
+    before = os.getcwd()
+    os.chdir(ROOT)
+    try:
+        for block in blocks:
+            exec(compile(block, "README.md", "exec"), {"halfplane": __import__("halfplane")})
+    finally:
+        os.chdir(before)
+    assert capsys.readouterr().out

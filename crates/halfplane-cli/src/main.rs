@@ -38,7 +38,7 @@ fn main() -> ExitCode {
             Some(StdoutError(io)) if io.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
             _ => {
                 note(&format!("error: {e:#}"));
-                if let Some(h) = commands::hint(&e) {
+                if let Some(h) = commands::hint(&e, &cli.command) {
                     note(&format!("hint: {h}"));
                 }
                 ExitCode::from(2)

@@ -75,6 +75,7 @@ impl Units {
     }
 
     /// The names the figures' axis labels show.
+    #[cfg(feature = "plot")]
     pub fn plot(&self) -> halfplane_plot::Units {
         halfplane_plot::Units {
             force_per_length: self.force_per_length(),

@@ -322,3 +322,34 @@ fn unreadable_case_file_is_a_clear_error() {
         stderr(&o)
     );
 }
+
+/// Values in messages read as the user wrote them: 1e300 was echoed as a 301-digit decimal and
+/// 1e-35 as a 37-digit one.
+#[test]
+fn messages_echo_numbers_as_people_write_them() {
+    let cases = [
+        (
+            "youngs_modulus = 200000.0",
+            "youngs_modulus = 1e300",
+            "material.youngs_modulus = 1e300:",
+        ),
+        ("radius = 50.0", "radius = 1e-35", "profile.radius = 1e-35:"),
+        (
+            "bulk = 20.0",
+            "bulk = -2.5e40",
+            "cycle.point2.bulk = -2.5e40:",
+        ),
+        (
+            "radius = 50.0",
+            "radius = 50.0\n[solver]\ncells = 1e300",
+            "solver.cells = 1e300:",
+        ),
+    ];
+    for (from, to, expected) in cases {
+        let case = case_with("written", &GOOD.replace(from, to), None);
+        let o = run(&["steady", case.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{to}");
+        assert!(stderr(&o).contains(expected), "{to}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("00000000"), "{to}: {}", stderr(&o));
+    }
+}

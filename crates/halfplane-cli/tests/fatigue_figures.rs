@@ -1,6 +1,7 @@
 //! End-to-end tests of the stress and fatigue figures (`plot stress-map`, `plot fatigue-map`,
 //! `plot surface-profiles`): each is written with its series, and bad input exits 2 naming the
 //! field or option.
+#![cfg(feature = "plot")]
 
 mod common;
 use common::*;

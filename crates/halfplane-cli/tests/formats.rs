@@ -126,6 +126,7 @@ fn steady_csv_is_the_json_in_one_row_of_fixed_columns() {
     }
 }
 
+#[cfg(feature = "plot")] // only the figure tests use it
 fn with_units(name: &str, units: &str) -> ScratchFile {
     let text = std::fs::read_to_string(examples().join("march-cycle.toml")).unwrap();
     let file = ScratchFile::new(scratch(name), "case.toml");
@@ -133,6 +134,7 @@ fn with_units(name: &str, units: &str) -> ScratchFile {
     file
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn units_label_tables_and_axes_but_not_keys() {
     let case = with_units("units", "force = \"kN\"\nlength = \"m\"\nstress = \"kPa\"");
@@ -179,6 +181,7 @@ fn units_label_tables_and_axes_but_not_keys() {
     }
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn figure_options_belong_to_their_figure() {
     let hertz = example("hertz.toml");
@@ -248,5 +251,50 @@ fn figure_options_belong_to_their_figure() {
     assert!(
         help.contains("--frictions") && !help.contains("--steps"),
         "{help}"
+    );
+}
+
+/// Without the `plot` feature (the README's first command builds so, for speed) every other
+/// command works and `plot` says how to get figures.
+#[cfg(not(feature = "plot"))]
+#[test]
+fn plot_without_the_feature_says_how_to_enable_it() {
+    let o = run(&["plot", "load-space", &example("hertz.toml"), "-o", "x.png"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--features plot"), "{}", stderr(&o));
+    assert!(!std::path::Path::new("x.png").exists());
+}
+
+/// Tables print numbers as people read them: the fatigue table printed `2.3615e0`, `4.8670e2`;
+/// every number from 1e-3 to 1e6 is now in plain notation, and the CSV keeps every digit.
+#[test]
+fn tables_use_exponents_only_outside_the_readable_range() {
+    let case = example("fatigue.toml");
+    let table = ok(&["fatigue", &case]);
+    let csv = ok(&["fatigue", &case, "--csv"]);
+    let mut checked = 0;
+    for line in table.lines().skip(3) {
+        // The significant-digit columns: value, point_method, line_method, cycles.
+        let words: Vec<&str> = line.split_whitespace().collect();
+        for word in [1, 6, 7, 8].map(|k| words[k]) {
+            if let Ok(v) = word.parse::<f64>() {
+                let readable = v == 0.0 || (1e-3..1e6).contains(&v.abs());
+                assert_eq!(word.contains('e'), !readable, "{word} in {line}");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 12, "{table}");
+    let swt = csv
+        .lines()
+        .find(|l| l.starts_with("swt,"))
+        .expect("swt row");
+    let value: f64 = swt.split(',').nth(1).unwrap().parse().unwrap();
+    assert!((1.0..10.0).contains(&value), "{swt}");
+    let shown = format!("{value:.4}");
+    assert!(table.contains(&format!(" {shown} ")), "{shown} in\n{table}");
+    assert!(
+        swt.split(',').nth(1).unwrap().len() > 10,
+        "CSV keeps every digit: {swt}"
     );
 }

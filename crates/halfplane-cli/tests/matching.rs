@@ -276,6 +276,7 @@ fn bad_requests_exit_2_naming_what_is_wrong() {
     );
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn plot_match_draws_both_load_spaces() {
     let dir = scratch("match-plot");
@@ -294,4 +295,32 @@ fn plot_match_draws_both_load_spaces() {
     assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("prototype: flat, rounded edges") && text.contains("test: Hertz"));
+}
+
+/// A failed match's hint offers the other mode: in --exact it offered "--exact" again.
+#[test]
+fn a_failed_match_hints_at_the_other_mode() {
+    let dir = scratch("match-hint");
+    let out = dir.join("TEST.toml");
+    let proto = example("flat-rounded.toml");
+    let hint = |args: &[&str]| {
+        let mut all = vec!["match", proto.as_str(), "--profile", "hertz"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["-o", path(&out)]);
+        let o = run(&all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let text = stderr(&o);
+        let line = text
+            .lines()
+            .find(|l| l.starts_with("hint: "))
+            .map(str::to_string);
+        line.unwrap_or_else(|| panic!("{args:?}: no hint in {text}"))
+    };
+    let exact = hint(&["--radius", "100", "--exact"]);
+    assert!(
+        exact.contains("without --exact") && !exact.contains("(--exact)"),
+        "{exact}"
+    );
+    let asymptotic = hint(&["--radius", "50", "--friction", "0.2"]);
+    assert!(asymptotic.contains("exact match (--exact)"), "{asymptotic}");
 }

@@ -1,9 +1,10 @@
 //! End-to-end tests of `halfplane plot`: every figure from a bundled example, and bad requests.
+//! (The README's figure commands are run by tests/readme.rs.)
+#![cfg(feature = "plot")]
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::PathBuf;
 
 /// A scratch directory of this test process, removed when dropped.
 struct Scratch(PathBuf);
@@ -33,89 +34,6 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
     assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
     let word = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
     (word(16), word(20))
-}
-
-/// Every figure in the README is the output of the command above it: each `plot` command the
-/// README shows runs from the repository root and writes a PNG of the committed picture's size,
-/// and every committed picture in docs/ has such a command. (Pixels are not compared: they depend
-/// on font rasterisation. The size includes the legend strip, so it also changes when a legend
-/// moves between a corner and below the panels.)
-#[test]
-fn every_readme_figure_command_writes_a_png_of_the_committed_size() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let shown = |command: &str| -> Vec<Vec<&str>> {
-        readme
-            .lines()
-            .filter_map(|l| {
-                l.trim()
-                    .strip_prefix("cargo run --release -p halfplane-cli -- ")
-            })
-            .filter(|c| c.starts_with(command))
-            .map(|c| c.split_whitespace().collect())
-            .collect()
-    };
-    let commands = shown("plot ");
-    let target = |c: &[&str]| c[c.iter().position(|a| *a == "-o").expect("-o") + 1].to_string();
-    // A figure drawn from a sweep's output (design-map) needs the sweep the README runs before
-    // it: each README sweep runs first, into the scratch directory, and a plot command reading
-    // its output reads it there.
-    let scratch = Scratch::new("readme");
-    let mut sweeps: Vec<(String, String)> = Vec::new();
-    for c in shown("sweep ") {
-        let written = target(&c);
-        let out = scratch.out(Path::new(&written).file_name().unwrap().to_str().unwrap());
-        let out = out.to_str().unwrap().to_string();
-        let args: Vec<&str> = c
-            .iter()
-            .map(|a| if *a == written { out.as_str() } else { a })
-            .collect();
-        let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
-            .args(&args)
-            .current_dir(&root)
-            .output()
-            .expect("run halfplane");
-        assert!(o.status.success(), "{c:?}: {}", stderr(&o));
-        sweeps.push((written, out));
-    }
-    let sweeps = &sweeps;
-    let mut drawn: Vec<String> = commands.iter().map(|c| target(c)).collect();
-    drawn.sort();
-    let mut committed: Vec<String> = std::fs::read_dir(root.join("docs"))
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".png"))
-        .map(|n| format!("docs/{n}"))
-        .collect();
-    committed.sort();
-    assert_eq!(drawn, committed, "README plot commands against docs/*.png");
-    std::thread::scope(|s| {
-        for c in &commands {
-            let scratch = &scratch;
-            let root = &root;
-            s.spawn(move || {
-                let docs = target(c);
-                let out = scratch.out(Path::new(&docs).file_name().unwrap().to_str().unwrap());
-                let args: Vec<&str> = c
-                    .iter()
-                    .map(|a| match sweeps.iter().find(|(written, _)| written == a) {
-                        Some((_, there)) => there.as_str(),
-                        None if *a == docs => out.to_str().unwrap(),
-                        None => a,
-                    })
-                    .collect();
-                let o = Command::new(env!("CARGO_BIN_EXE_halfplane"))
-                    .args(&args)
-                    .current_dir(root)
-                    .output()
-                    .expect("run halfplane");
-                assert!(o.status.success(), "{c:?}: {}", stderr(&o));
-                let ours = png_size(&std::fs::read(&out).unwrap());
-                let theirs = png_size(&std::fs::read(root.join(&docs)).unwrap());
-                assert_eq!(ours, theirs, "{docs}: regenerate it with {c:?}");
-            });
-        }
-    });
 }
 
 #[test]

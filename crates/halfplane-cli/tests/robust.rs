@@ -3,7 +3,6 @@
 
 mod common;
 use common::*;
-use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BASE: &str = REFERENCE_CASE;
@@ -119,6 +118,7 @@ fn out_of_range_cells_are_clear_errors() {
     assert_clear_error("--cells", &o, &["cells", "10000000000"]);
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn huge_evolve_points_are_a_clear_error_with_the_maximum() {
     let hertz = example("hertz.toml");
@@ -187,6 +187,7 @@ fn a_closed_pipe_ends_quietly_with_exit_0() {
     }
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn a_full_disk_is_exit_2_with_a_message() {
     let full = || std::fs::File::create("/dev/full").expect("/dev/full");
@@ -226,12 +227,14 @@ fn a_full_disk_is_exit_2_with_a_message() {
     assert_eq!(o.status.code(), Some(0), "plot with a full stderr");
 }
 
+#[cfg(feature = "plot")] // only the figure tests use it
 #[cfg(unix)]
-fn link_to_dev_full(path: &Path) {
+fn link_to_dev_full(path: &std::path::Path) {
     std::os::unix::fs::symlink("/dev/full", path).unwrap();
 }
 
 #[cfg(unix)]
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn fields_and_plots_on_a_full_disk_are_exit_2_naming_the_file() {
     let cycle = example("march-cycle.toml");
@@ -263,6 +266,7 @@ fn fields_and_plots_on_a_full_disk_are_exit_2_naming_the_file() {
     }
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn march_fields_takes_at_most_20_steps() {
     let steps: Vec<String> = (1..=21).map(|k| k.to_string()).collect();

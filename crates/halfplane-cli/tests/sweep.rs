@@ -467,6 +467,7 @@ fn parquet_holds_the_same_rows_as_the_csv() {
     );
 }
 
+#[cfg(feature = "plot")] // draws a figure
 #[test]
 fn design_map_draws_a_sweep_and_names_what_it_cannot_draw() {
     let dir = scratch("sweep-map");
@@ -522,4 +523,86 @@ fn design_map_draws_a_sweep_and_names_what_it_cannot_draw() {
     );
     let o = map(&["--where", "friction.coefficient=0.45"]);
     assert!(stderr(&o).contains("no rows to draw"), "{}", stderr(&o));
+}
+
+/// `design-map` never draws a map that only looks valid: a text colour column (the `error`
+/// column drew an all-grey map with exit 0) and a text cell in a numeric column (read as a
+/// category per number) are errors naming the column; rows without a value (failed or sliding
+/// cases) are drawn as "no value" with a warning on stderr saying how many; the same column for
+/// --x and --y is named as such (it was reported as rows needing --where).
+#[cfg(feature = "plot")] // draws a figure
+#[test]
+fn design_map_refuses_text_colours_and_says_what_it_draws_without_a_value() {
+    let dir = scratch("sweep-map-text");
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"cycle.point2.shear\" = {{ from = 0.0, to = 800.0, count = 9 }}\n\"profile.radius\" = [20.0, 50.0, 100.0]\n"
+    );
+    let csv_text = sweep(&dir, &spec, "out.csv", &[]);
+    let csv = dir.join("out.csv");
+    let svg = dir.join("map.svg");
+    let map = |file: &Path, x: &str, y: &str, color: &str| {
+        run(&[
+            "plot",
+            "design-map",
+            file.to_str().unwrap(),
+            "--x",
+            x,
+            "--y",
+            y,
+            "--color",
+            color,
+            "-o",
+            svg.to_str().unwrap(),
+        ])
+    };
+    let (x, y) = ("cycle.point2.shear", "profile.radius");
+    let o = map(&csv, x, y, "error");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--color error: column error") && stderr(&o).contains("holds text"),
+        "{}",
+        stderr(&o)
+    );
+    // Gross sliding at the largest shear ranges leaves slip_right_1 empty on some rows.
+    let table = rows(&csv_text);
+    let column = table[0].iter().position(|c| c == "slip_right_1").unwrap();
+    let empty = table[1..].iter().filter(|r| r[column].is_empty()).count();
+    assert!(empty > 0 && empty < table.len() - 1, "{empty} empty rows");
+    let o = map(&csv, x, y, "slip_right_1");
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&format!(
+            "warning: {empty} of {} rows drawn have no value of slip_right_1",
+            table.len() - 1
+        )),
+        "{}",
+        stderr(&o)
+    );
+    // One cell of a numeric column replaced by text: named by row and column.
+    let mut edited = table.clone();
+    let row = edited
+        .iter()
+        .position(|r| !r[column].is_empty() && r[column] != "slip_right_1");
+    let row = row.unwrap();
+    edited[row][column] = "oops".into();
+    let bad = dir.join("edited.csv");
+    let mut writer = csv::Writer::from_path(&bad).unwrap();
+    edited.iter().for_each(|r| writer.write_record(r).unwrap());
+    writer.flush().unwrap();
+    let o = map(&bad, x, y, "slip_right_1");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&format!("row {row} of"))
+            && stderr(&o).contains("\"oops\" in column slip_right_1"),
+        "{}",
+        stderr(&o)
+    );
+    let o = map(&csv, x, x, "regime");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--x and --y both name \"cycle.point2.shear\"")
+            && !stderr(&o).contains("--where"),
+        "{}",
+        stderr(&o)
+    );
 }

@@ -128,7 +128,7 @@ pub fn march_report<'py>(
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
     let steady = case.steady();
     let options = case
-        .solver_with_cells(cells)
+        .solver_with_cells_named(cells, "cells")
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
     if !no_size_limit {
         let field = match cells {

@@ -286,6 +286,11 @@ impl PyCase {
                         None,
                     ));
                 }
+                // Checked here, so that a bad row is reported as the row of the list it is
+                // ("history row 3"), not as a line of the CSV file the case keeps it in.
+                let triples: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
+                halfplane::history::History::from_rows(&triples)
+                    .map_err(|e| errors::from_library(py, &e))?;
                 files.insert(
                     HISTORY_FILE.to_string(),
                     csv_table("normal,shear,bulk", &rows),

@@ -39,7 +39,9 @@ pub fn stress_points<'py>(
         halfplane::stress::check_point(i, xi, zi).map_err(|e| errors::from_library(py, &e))?;
     }
     let history = case.history().map_err(input)?;
-    let options = case.solver_with_cells(cells).map_err(input)?;
+    let options = case
+        .solver_with_cells_named(cells, "cells")
+        .map_err(input)?;
     let step = stress_command::check_step(step, &history, "step").map_err(input)?;
     let contact = &case.contact;
     let units = &case.units;
@@ -74,7 +76,9 @@ pub fn fatigue_report(
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let settings = case.fatigue().map_err(input)?;
     let history = case.history().map_err(input)?;
-    let options = case.solver_with_cells(cells).map_err(input)?;
+    let options = case
+        .solver_with_cells_named(cells, "cells")
+        .map_err(input)?;
     let contact = &case.contact;
     let result = py
         .detach(|| {

@@ -3,6 +3,7 @@
 
 use crate::labels::{Edge, GivenPoint, Half};
 use crate::matching::{LoadIndex, MatchConstraint, MatchSide};
+use crate::written::Written;
 use thiserror::Error;
 
 /// Everything that can go wrong in the library. Messages state the problem and what would be
@@ -12,7 +13,7 @@ use thiserror::Error;
 #[non_exhaustive]
 pub enum Error {
     /// A physical input is outside its valid range (or not finite).
-    #[error("invalid {field} = {value}: must be {valid}")]
+    #[error("invalid {field} = {}: must be {valid}", Written(*.value))]
     InvalidInput {
         /// Name of the input, as the case file spells it where there is one.
         field: String,
@@ -45,7 +46,7 @@ pub enum Error {
     },
 
     /// A value in a row of a table (a history) is outside its valid range.
-    #[error("{table} row {row}: invalid {column} = {value}: must be {valid}")]
+    #[error("{table} row {row}: invalid {column} = {}: must be {valid}", Written(*.value))]
     InvalidRow {
         /// Which table.
         table: &'static str,
@@ -265,7 +266,7 @@ pub enum Error {
 
     /// A range of values (a sweep axis) whose ends are out of order, or that a logarithmic
     /// scale cannot span.
-    #[error("invalid {field} = {{ from = {from}, to = {to} }}: {problem}")]
+    #[error("invalid {field} = {{ from = {}, to = {} }}: {problem}", Written(*.from), Written(*.to))]
     InvalidRange {
         /// Name of the range, as the input spells it.
         field: String,
@@ -280,7 +281,8 @@ pub enum Error {
     /// A value given for a parameter that the chosen kind does not use (a batch row's profile
     /// parameter of another kind): rejected rather than ignored, so a misplaced value is seen.
     #[error(
-        "{field} = {value} is not used by profile kind \"{kind}\": it must be NaN (not given)"
+        "{field} = {} is not used by profile kind \"{kind}\": it must be NaN (not given)",
+        Written(*.value)
     )]
     NotUsed {
         /// The parameter (column).

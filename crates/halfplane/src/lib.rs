@@ -58,6 +58,7 @@ pub mod slip_map;
 mod spline;
 pub mod steady;
 pub mod stress;
+pub mod written;
 
 pub use error::{Error, Result};
 pub use labels::{Edge, GivenPoint, Half, PerEdge, PerPoint};

@@ -67,7 +67,7 @@ pub(crate) fn count_in(value: &RawCount, field: &str, min: usize, max: usize) ->
         _ => {
             let shown = match value {
                 RawCount::Integer(i) => i.to_string(),
-                RawCount::Float(f) => f.to_string(),
+                RawCount::Float(f) => halfplane::written::Written(*f).to_string(),
                 RawCount::Other(s) => s.clone(),
             };
             bail!("invalid {field} = {shown}: must be a whole number from {min} to {max}")

@@ -157,14 +157,19 @@ impl Case {
 
     /// The solver settings, with `cells` (from `--cells`) overriding `[solver] cells`.
     pub fn solver_with_cells(&self, cells: Option<usize>) -> Result<MarchOptions> {
+        self.solver_with_cells_named(cells, "--cells")
+    }
+
+    /// [`Case::solver_with_cells`] for another front end: an invalid `cells` is reported under
+    /// `name`, as that front end spells it (Python's `cells` keyword).
+    pub fn solver_with_cells_named(
+        &self,
+        cells: Option<usize>,
+        name: &str,
+    ) -> Result<MarchOptions> {
         let mut options = self.solver;
         if let Some(n) = cells {
-            let n = count_in(
-                &RawCount::Integer(n as i128),
-                "--cells",
-                MIN_CELLS,
-                MAX_CELLS,
-            )?;
+            let n = count_in(&RawCount::Integer(n as i128), name, MIN_CELLS, MAX_CELLS)?;
             options = options.with_cells(n)?;
         }
         Ok(options)

@@ -36,6 +36,67 @@ fn filter(text: &str) -> Result<(String, f64)> {
     Ok((path.trim().to_string(), value))
 }
 
+/// The colour of the rows `keep`: categories for `regime` (the one text column a sweep writes
+/// for colouring), numbers for any other column. Text anywhere else is an error naming the
+/// column (the `error` column, or a cell a sweep never writes), since drawing it as categories
+/// or skipping it would give a map that looks valid; rows without a value (failed cases, the
+/// stick zone in gross sliding) are drawn as "no value", and stderr says how many.
+fn color(args: &DesignMapArgs, table: &read::SweepTable, keep: &[usize]) -> Result<MapColor> {
+    let name = &args.color;
+    let file = args.sweep.display();
+    let numeric: Vec<&str> = table
+        .names
+        .iter()
+        .map(String::as_str)
+        .filter(|n| !matches!(*n, "regime" | "error"))
+        .collect();
+    if name == "error" {
+        bail!(
+            "--color error: column error of {file} holds text (each failed row's message), not numbers; --color takes regime or a numeric column ({})",
+            numeric.join(", ")
+        );
+    }
+    match &table.columns[2] {
+        Values::Text(v) if name == "regime" => Ok(MapColor::Category(
+            keep.iter().map(|&i| v[i].clone()).collect(),
+        )),
+        Values::Text(v) => {
+            let text = |c: &&String| !c.trim().is_empty() && c.trim().parse::<f64>().is_err();
+            let numbers = v.iter().filter(|c| c.trim().parse::<f64>().is_ok()).count();
+            match v.iter().position(|c| text(&c)) {
+                Some(row) if numbers > 0 => bail!(
+                    "--color {name}: row {} of {file} has {:?} in column {name}, which is not a number; a sweep writes only numbers or empty cells there",
+                    row + 1,
+                    v[row]
+                ),
+                _ => bail!(
+                    "--color {name}: column {name} of {file} holds text, not numbers; --color takes regime or a numeric column ({})",
+                    numeric.join(", ")
+                ),
+            }
+        }
+        Values::Number(_) if name == "regime" => bail!(
+            "--color regime: column regime of {file} holds numbers, not regime names; this is not a sweep's output"
+        ),
+        Values::Number(v) => {
+            let values: Vec<Option<f64>> = keep.iter().map(|&i| v[i]).collect();
+            let empty: Vec<usize> = keep.iter().copied().filter(|&i| v[i].is_none()).collect();
+            if let Some(first) = empty.first() {
+                note(&format!(
+                    "warning: {} of {} rows drawn have no value of {name} (failed cases, or no stick zone in gross sliding; see the error and regime columns), first row {}: drawn grey as \"no value\"",
+                    empty.len(),
+                    keep.len(),
+                    first + 1
+                ));
+            }
+            if values.iter().all(Option::is_none) {
+                bail!("--color {name}: no row drawn has a value of {name} in {file}");
+            }
+            Ok(MapColor::Numeric(values))
+        }
+    }
+}
+
 impl DesignMapConfig {
     /// Reads the columns the map needs and keeps the rows `--where` selects.
     pub fn resolve(args: &DesignMapArgs) -> Result<Self> {
@@ -44,6 +105,12 @@ impl DesignMapConfig {
             .iter()
             .map(|f| filter(f))
             .collect::<Result<Vec<_>>>()?;
+        if args.x == args.y {
+            bail!(
+                "--x and --y both name {:?}: a map needs two different columns (the varied paths)",
+                args.x
+            );
+        }
         let mut wanted = vec![args.x.as_str(), args.y.as_str(), args.color.as_str()];
         wanted.extend(filters.iter().map(|f| f.0.as_str()));
         let table = read::read(&args.sweep, &wanted)?;
@@ -110,10 +177,7 @@ impl DesignMapConfig {
                 if others.is_empty() { "nothing else (the output repeats rows)".to_string() } else { others.join(", ") }
             );
         }
-        let color = match &table.columns[2] {
-            Values::Number(v) => MapColor::Numeric(keep.iter().map(|&i| v[i]).collect()),
-            Values::Text(v) => MapColor::Category(keep.iter().map(|&i| v[i].clone()).collect()),
-        };
+        let color = color(args, &table, &keep)?;
         Ok(Self {
             map: DesignMap {
                 x_label: args.x.clone(),

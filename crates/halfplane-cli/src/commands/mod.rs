@@ -2,11 +2,13 @@
 //! (`Config::resolve`), and `run`, which computes and prints. `main` only parses and dispatches.
 
 pub mod crack;
+#[cfg(feature = "plot")]
 pub mod design_map;
 pub mod evolve;
 pub mod fatigue;
 pub mod march;
 pub mod matching;
+#[cfg(feature = "plot")]
 pub mod plot;
 pub mod steady;
 pub mod stress;
@@ -14,6 +16,11 @@ pub mod sweep;
 
 use crate::args::{Command, PlotCommand};
 use anyhow::Result;
+
+/// Why `plot` fails in a build without figures, and how to get them.
+#[cfg(not(feature = "plot"))]
+const NO_PLOT: &str = "this halfplane was built without figures (--no-default-features); build \
+     it with --features plot (or without --no-default-features) to draw them";
 
 /// Resolves the command's configuration and runs it.
 pub fn run(command: &Command) -> Result<()> {
@@ -25,17 +32,22 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
         Command::Crack(a) => crack::run(&crack::CrackConfig::resolve(a)?),
+        #[cfg(feature = "plot")]
         Command::Plot(PlotCommand::DesignMap(a)) => {
             design_map::run(&design_map::DesignMapConfig::resolve(a)?)
         }
+        #[cfg(feature = "plot")]
         Command::Plot(p) => plot::run(&plot::PlotConfig::resolve(p)?),
+        #[cfg(not(feature = "plot"))]
+        Command::Plot(_) => anyhow::bail!(NO_PLOT),
         Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
     }
 }
 
 /// What to do next when a load case is outside the steady-state analysis, chosen by the library's
-/// error variant (never by its text), or when a run is refused as too large.
-pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
+/// error variant (never by its text) and, for `match`, by the mode the command was run in (the
+/// hint offers the other one), or when a run is refused as too large.
+pub fn hint(error: &anyhow::Error, command: &Command) -> Option<&'static str> {
     use halfplane::Error;
     if error
         .chain()
@@ -46,6 +58,11 @@ pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
              sweep), or add --no-size-limit to run it anyway",
         );
     }
+    let exact = match command {
+        Command::Match(a) => a.test.exact,
+        Command::Plot(PlotCommand::Match(a)) => a.test.exact,
+        _ => false,
+    };
     match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
         Error::SlipReversesInHalf { .. }
         | Error::StickZoneOutsideContact { .. }
@@ -58,9 +75,18 @@ pub fn hint(error: &anyhow::Error) -> Option<&'static str> {
             side: halfplane::matching::MatchSide::Test,
             ..
         }
+        | Error::MatchNotBracketed { .. } if exact => Some(
+            "choose another test geometry (for a Hertz test a different --radius gives another \
+             contact size at the same K_N) or the asymptotic match (the same command without \
+             --exact)",
+        ),
+        Error::NoValidMatch {
+            side: halfplane::matching::MatchSide::Test,
+            ..
+        }
         | Error::MatchNotBracketed { .. } => Some(
             "choose another test geometry (for a Hertz test a different --radius gives another \
-             contact size at the same K_N) or the other match mode (--exact)",
+             contact size at the same K_N) or the exact match (--exact)",
         ),
         _ => None,
     }

@@ -44,18 +44,18 @@ impl FatigueRow {
     /// The columns, in order (`plane` in degrees from +x towards +z).
     pub const COLUMNS: [Column<Self>; 9] = {
         use Quantity::{Length, None};
-        use Style::Sci;
+        use Style::Sig;
         [
             Column::<Self>::new("parameter", None, |r| Cell::Text(r.parameter.into()))
                 .table(12, Style::Fixed(0)),
-            Column::<Self>::new("value", None, |r| Cell::Num(r.value)).table(13, Sci(4)),
+            Column::<Self>::new("value", None, |r| Cell::Num(r.value)).table(13, Sig(5)),
             Column::<Self>::new("x", Length, |r| Cell::Num(r.x)).table(11, Style::Fixed(5)),
             Column::<Self>::new("z", Length, |r| Cell::Num(r.z)).table(11, Style::Fixed(5)),
             Column::<Self>::new("plane", None, |r| opt(r.plane)).table(7, Style::Fixed(2)),
             Column::<Self>::new("step", None, |r| Cell::Int(r.step)).table(6, Style::Fixed(0)),
-            Column::<Self>::new("point_method", None, |r| opt(r.point_method)).table(13, Sci(4)),
-            Column::<Self>::new("line_method", None, |r| opt(r.line_method)).table(13, Sci(4)),
-            Column::<Self>::new("cycles", None, |r| opt(r.cycles)).table(11, Sci(3)),
+            Column::<Self>::new("point_method", None, |r| opt(r.point_method)).table(13, Sig(5)),
+            Column::<Self>::new("line_method", None, |r| opt(r.line_method)).table(13, Sig(5)),
+            Column::<Self>::new("cycles", None, |r| opt(r.cycles)).table(11, Sig(4)),
         ]
     };
 }

@@ -90,12 +90,12 @@ impl MarchCycleRow {
             .titled("cycle")
             .table(6, Style::Fixed(0)),
         Column::<Self>::new("energy", Quantity::Energy, |r| Cell::Num(r.energy))
-            .table(14, Style::Sci(6)),
+            .table(14, Style::Sig(7)),
         Column::<Self>::new("max_slip_amplitude", Quantity::Length, |r| {
             Cell::Num(r.max_slip_amplitude)
         })
         .titled("max slip amplitude")
-        .table(20, Style::Sci(6)),
+        .table(20, Style::Sig(7)),
     ];
 }
 
@@ -217,8 +217,8 @@ impl<'a> MarchReport<'a> {
         if let Some(last) = self.steps.last() {
             let _ = writeln!(
                 o,
-                "energy       {:.6e} {} dissipated in all",
-                last.energy,
+                "energy       {} {} dissipated in all",
+                super::significant(last.energy, 7),
                 self.units.of(Quantity::Energy)
             );
         }

@@ -31,8 +31,27 @@ pub enum Cell {
 pub enum Style {
     /// Fixed point with this many decimals.
     Fixed(usize),
-    /// Scientific with this many decimals.
-    Sci(usize),
+    /// This many significant digits, written as people read them ([`significant`]).
+    Sig(usize),
+}
+
+/// `x` to `digits` significant digits (at least 1): plain notation for 1e-3 <= |x| < 1e6 and for
+/// 0 (`2.3615`, `486.70`, `0.0012340`), scientific outside it, where plain notation would need
+/// runs of zeros (`3.1659e-4`, `1.2346e8`). The magnitude is taken after rounding, so 999.996 to
+/// five digits is `1000.0`. Tables only: CSV and JSON keep every digit.
+pub fn significant(x: f64, digits: usize) -> String {
+    let decimals = digits.max(1) - 1;
+    let sci = format!("{x:.decimals$e}");
+    let exponent: i32 = match sci.split_once('e') {
+        Some((_, e)) if x.is_finite() => e.parse().unwrap_or(0),
+        _ => return sci,
+    };
+    if x == 0.0 || (-3..6).contains(&exponent) {
+        let places = (decimals as i32 - exponent).max(0) as usize;
+        format!("{x:.places$}")
+    } else {
+        sci
+    }
 }
 
 /// Which outputs show a column.
@@ -156,7 +175,7 @@ pub fn table<R>(columns: &[Column<R>], rows: &[R], units: &Units) -> String {
         line(&mut o, &|c| match ((c.get)(r), c.style) {
             (Cell::Int(n), _) => n.to_string(),
             (Cell::Num(x), Style::Fixed(p)) => format!("{x:.p$}"),
-            (Cell::Num(x), Style::Sci(p)) => format!("{x:.p$e}"),
+            (Cell::Num(x), Style::Sig(p)) => significant(x, p),
             (Cell::Text(t), _) => t,
             (Cell::Missing, _) => "-".into(),
         });
@@ -190,6 +209,31 @@ pub(crate) mod tests {
         .only(Shown::Csv),
         Column::<Row>::new("name", Quantity::None, |r| Cell::Text(r.3.into())),
     ];
+
+    #[test]
+    fn significant_digits_are_plain_in_the_readable_range_and_scientific_outside() {
+        // The cases (were 2.3615e0, 4.8670e2, 4.3087e2), both ends of the plain range,
+        // rounding that carries into the next power of ten, signs, zero and non-finite values.
+        let cases: [(f64, usize, &str); 14] = [
+            (2.36149, 5, "2.3615"),
+            (486.7012, 5, "486.70"),
+            (430.8712, 5, "430.87"),
+            (1.0e-3, 5, "0.0010000"),
+            (9.99994e-4, 5, "9.9999e-4"),
+            (999_994.0, 5, "999994"),
+            (999_996.0, 5, "1.0000e6"),
+            (999.996, 5, "1000.0"),
+            (-0.0398152, 7, "-0.03981520"),
+            (3.1659351e-4, 7, "3.165935e-4"),
+            (1.25e12, 3, "1.25e12"),
+            (0.0, 5, "0.0000"),
+            (7.0, 1, "7"),
+            (f64::INFINITY, 5, "inf"),
+        ];
+        for (x, digits, expected) in cases {
+            assert_eq!(significant(x, digits), expected, "{x} to {digits} digits");
+        }
+    }
 
     #[test]
     fn one_column_list_gives_the_table_and_the_csv() {
