@@ -43,7 +43,7 @@ impl CrackRow {
         use Quantity::{Intensity, Length};
         use Style::Fixed;
         [
-            Column::<Self>::new("length", Length, |r| Cell::Num(r.length)).table(11, Style::Sci(4)),
+            Column::<Self>::new("length", Length, |r| Cell::Num(r.length)).table(11, Style::Sig(5)),
             Column::<Self>::new("k1_max", Intensity, |r| Cell::Num(r.k1_max)).table(10, Fixed(3)),
             Column::<Self>::new("k1_min", Intensity, |r| Cell::Num(r.k1_min)).table(10, Fixed(3)),
             Column::<Self>::new("k2_max", Intensity, |r| Cell::Num(r.k2_max)).table(10, Fixed(3)),
