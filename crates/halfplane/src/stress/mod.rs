@@ -43,6 +43,7 @@ pub use traction::{Traction, MAX_NODES};
 use crate::error::{physical, Error, Result, MAGNITUDE_LIMIT};
 use crate::material::Material;
 use far::FarField;
+use std::sync::OnceLock;
 
 /// The stress state at one point (tension positive).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -169,6 +170,7 @@ fn stress_from(sxx: f64, szz: f64, sxz: f64, bulk: f64, nu: f64) -> Stress {
 
 /// Stresses at the points `(x[i], z[i])` under `traction` and the bulk tension `bulk`, in order
 /// (see [`at`]). `x` and `z` must have the same length. Errors name the point by its 0-based index.
+/// The same as [`Evaluator::field`] on a new evaluator.
 ///
 /// A traction of many nodes is evaluated by a fast multipole method (`docs/stress.md`, "Fast
 /// evaluation"): exact closed forms near each point, expansions far from it, agreeing with the
@@ -184,35 +186,65 @@ pub fn field(
     x: &[f64],
     z: &[f64],
 ) -> Result<StressField> {
-    check_points(bulk, x, z)?;
-    let tree = if traction.nodes.len() >= FAST_MIN_NODES {
-        fast::Tree::new(traction)
-    } else {
-        None
-    };
-    let Some(tree) = tree else {
-        return field_direct(traction, bulk, material, x, z);
-    };
-    let nu = material.poisson_ratio();
-    let far = x
-        .iter()
-        .zip(z)
-        .any(|(&x, &z)| far::is_far(traction, x, z))
-        .then(|| FarField::new(traction))
-        .flatten();
-    let in_plane = tree
-        .in_plane(x, z, far.as_ref())
-        .map_err(|i| on_jump(i, x[i]))?;
-    let mut out = StressField {
-        sxx: Vec::with_capacity(x.len()),
-        szz: Vec::with_capacity(x.len()),
-        syy: Vec::with_capacity(x.len()),
-        sxz: Vec::with_capacity(x.len()),
-    };
-    for [sxx, szz, sxz] in in_plane {
-        push(&mut out, stress_from(sxx, szz, sxz, bulk, nu));
+    Evaluator::new(traction, bulk, material)?.field(x, z)
+}
+
+/// A traction prepared for the stresses at many points asked for in as many calls as wanted
+/// (a front end writing its output in chunks): the fast method's tree and the far field are
+/// built once. Every call gives what [`field`] gives for the same points.
+pub struct Evaluator<'a> {
+    traction: &'a Traction,
+    bulk: f64,
+    material: Material,
+    tree: Option<fast::Tree<'a>>,
+    far: OnceLock<Option<FarField>>,
+}
+
+impl<'a> Evaluator<'a> {
+    /// The evaluator of `traction` under the bulk tension `bulk` (plane strain with the Poisson's
+    /// ratio of `material`). Errors: a bulk tension that is not finite or too large.
+    pub fn new(traction: &'a Traction, bulk: f64, material: &Material) -> Result<Self> {
+        physical("bulk tension", bulk)?;
+        let tree = if traction.nodes.len() >= FAST_MIN_NODES {
+            fast::Tree::new(traction)
+        } else {
+            None
+        };
+        Ok(Self {
+            traction,
+            bulk,
+            material: *material,
+            tree,
+            far: OnceLock::new(),
+        })
     }
-    Ok(out)
+
+    /// Stresses at the points `(x[i], z[i])`, in order, exactly as [`field`] gives them. Errors
+    /// name the point by its 0-based index in `x`.
+    pub fn field(&self, x: &[f64], z: &[f64]) -> Result<StressField> {
+        check_points(self.bulk, x, z)?;
+        let (t, bulk) = (self.traction, self.bulk);
+        let Some(tree) = &self.tree else {
+            return field_direct(t, bulk, &self.material, x, z);
+        };
+        let far = if x.iter().zip(z).any(|(&x, &z)| far::is_far(t, x, z)) {
+            self.far.get_or_init(|| FarField::new(t)).as_ref()
+        } else {
+            None
+        };
+        let nu = self.material.poisson_ratio();
+        let in_plane = tree.in_plane(x, z, far).map_err(|i| on_jump(i, x[i]))?;
+        let mut out = StressField {
+            sxx: Vec::with_capacity(x.len()),
+            szz: Vec::with_capacity(x.len()),
+            syy: Vec::with_capacity(x.len()),
+            sxz: Vec::with_capacity(x.len()),
+        };
+        for [sxx, szz, sxz] in in_plane {
+            push(&mut out, stress_from(sxx, szz, sxz, bulk, nu));
+        }
+        Ok(out)
+    }
 }
 
 /// Tractions with at least this many nodes are evaluated by the fast method whatever the number of

@@ -13,8 +13,9 @@
 //! the parent's neighbours' children that are not its own neighbours. A point's box is the first,
 //! going down, without near neighbours (all its field is then in the local expansion), or a box
 //! of the finest level, whose near elements are then summed by the exact closed form. Points
-//! outside the root box are at least `H` from the centre, four radii of the sources, and take the
-//! root multipole directly.
+//! four half-spans or more from the centre take the far field (`far.rs`), exactly as the direct
+//! route does; that includes every point outside the root box (at least `H` from the centre),
+//! except by rounding at the far field's radius, where the root multipole serves.
 //!
 //! Error: a local expansion of order `p` about a box of radius `r_t` = `w/sqrt 2` from sources
 //! within `r_s` of a centre `d >= sqrt((NEAR + 1)^2 + 1/4) w` away converges like
