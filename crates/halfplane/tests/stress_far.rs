@@ -240,3 +240,30 @@ fn a_point_has_the_same_stresses_alone_among_57_points_and_inside_a_million_poin
         );
     }
 }
+
+#[test]
+fn a_point_a_rounding_level_distance_from_a_node_has_the_stresses_of_the_node() {
+    // Found by the stress_points fuzz target: x = -1e-300 on the surface, a node at 0, gave NaN
+    // (u^2 + z^2 underflowed to 0 in the closed form). Failed before the fix. The stresses are
+    // continuous there: they must equal those on the node to rounding (1e-12 of the traction).
+    let x = [-1.0, -0.5, 0.0, 0.5, 1.0];
+    let p = [0.0, 2.0, 3.0, 2.0, 0.0];
+    let q = [0.0, -1.0, 0.5, 1.0, 0.0];
+    let t = Traction::contact(&x, &p, &q).unwrap();
+    let m = material();
+    let on = stress::at(&t, 0.0, &m, 0.0, 0.0).unwrap();
+    for (px, pz) in [
+        (-1e-300, 0.0),
+        (1e-300, 0.0),
+        (1e-300, 1e-300),
+        (0.0, 1e-200),
+    ] {
+        let s = stress::at(&t, 0.0, &m, px, pz).unwrap();
+        for (a, b) in [(s.sxx, on.sxx), (s.szz, on.szz), (s.sxz, on.sxz)] {
+            assert!(
+                (a - b).abs() < 1e-12 * 3.0,
+                "({px:e}, {pz:e}): {s:?} against {on:?} on the node"
+            );
+        }
+    }
+}
