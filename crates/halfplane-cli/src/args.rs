@@ -140,15 +140,10 @@ pub struct StressArgs {
     pub case: PathBuf,
     /// Points file (CSV) with the header x,z (z >= 0, the depth); one output row per point, in
     /// order.
-    #[arg(
-        long,
-        value_name = "POINTS.csv",
-        required_unless_present = "grid",
-        conflicts_with = "grid"
-    )]
+    #[arg(long, value_name = "POINTS.csv", conflicts_with = "grid")]
     pub at: Option<PathBuf>,
-    /// A grid instead of --at: X0,X1,NX,Z0,Z1,NZ (NX x NZ evenly spaced points, ends included;
-    /// rows run along x, one depth after another).
+    /// A grid instead of --at: X0,X1,NX,Z0,Z1,NZ (NX x NZ evenly spaced points, ends included,
+    /// X0 <= X1 and 0 <= Z0 <= Z1; rows run along x, one depth after another).
     #[arg(long, value_name = "X0,X1,NX,Z0,Z1,NZ", allow_hyphen_values = true)]
     pub grid: Option<String>,
     /// March increment whose state is used (1-based; default: the last).

@@ -6,10 +6,12 @@ use crate::output::emit;
 use crate::report::stress::{StressReport, StressRow};
 use crate::units::Units;
 use anyhow::{anyhow, bail, Context, Result};
+use halfplane::error::MAGNITUDE_LIMIT;
 use halfplane::history::History;
 use halfplane::march::MarchOptions;
 use halfplane::stress;
 use halfplane::Contact;
+use std::path::PathBuf;
 
 /// Most points a run takes (the points and the rows are held in memory: about 100 bytes each).
 pub const MAX_POINTS: usize = 10_000_000;
@@ -29,6 +31,8 @@ pub struct StressConfig {
     pub x: Vec<f64>,
     /// The points' depth z.
     pub z: Vec<f64>,
+    /// Where the points came from (for errors).
+    pub origin: Origin,
     /// Unit names.
     pub units: Units,
     /// Table, CSV or JSON.
@@ -41,17 +45,24 @@ impl StressConfig {
         let case = crate::case::load(&args.case)?;
         let history = case.history()?;
         let step = check_step(args.step, &history, "--step")?;
-        let (x, z) = match (&args.at, &args.grid) {
+        let (x, z, origin) = match (&args.at, &args.grid) {
             (Some(path), _) => {
                 let (values, lines) = crate::case::read_csv(path, "--at", &["x", "z"], MAX_POINTS)?;
                 let (x, z): (Vec<f64>, Vec<f64>) = values.chunks(2).map(|c| (c[0], c[1])).unzip();
-                for (i, line) in lines.iter().enumerate() {
+                let origin = Origin::File {
+                    path: path.clone(),
+                    lines,
+                };
+                for i in 0..x.len() {
                     stress::check_point(i, x[i], z[i])
-                        .map_err(|e| anyhow!("--at {}, line {line}: {e}", path.display()))?;
+                        .map_err(|e| point_error(&origin.name(i), &e))?;
                 }
-                (x, z)
+                (x, z, origin)
             }
-            (None, Some(g)) => grid(g)?,
+            (None, Some(g)) => {
+                let (x, z) = grid(g)?;
+                (x, z, Origin::Grid)
+            }
             (None, None) => {
                 bail!("give the points with --at POINTS.csv or --grid X0,X1,NX,Z0,Z1,NZ")
             }
@@ -63,9 +74,62 @@ impl StressConfig {
             step,
             x,
             z,
+            origin,
             units: case.units,
             format: args.format.format(),
         })
+    }
+}
+
+/// Where the points came from, to name one in an error as the user wrote it.
+#[derive(Debug, Clone)]
+pub enum Origin {
+    /// `--at FILE`: the file's line (1-based) of every point.
+    File {
+        /// The file.
+        path: PathBuf,
+        /// The line of each point.
+        lines: Vec<usize>,
+    },
+    /// `--grid`: points numbered from 1 along x, one depth after another.
+    Grid,
+}
+
+impl Origin {
+    /// Point `i` (0-based) as the user knows it.
+    pub fn name(&self, i: usize) -> String {
+        match self {
+            Origin::File { path, lines } => format!("--at {}, line {}", path.display(), lines[i]),
+            Origin::Grid => format!("--grid point {}", i + 1),
+        }
+    }
+}
+
+/// A library error about one point, re-worded for the point `name`: the coordinate (`x` or `z`),
+/// the value and what is valid, without the library's 0-based point number.
+fn point_error(name: &str, e: &halfplane::Error) -> anyhow::Error {
+    match e {
+        halfplane::Error::InvalidInput {
+            field,
+            value,
+            valid,
+        } => {
+            let coordinate = field.rsplit(": ").next().unwrap_or(field);
+            anyhow!(
+                "{name}: invalid {coordinate} = {}: must be {valid}",
+                number(*value)
+            )
+        }
+        other => anyhow!("{name}: {other}"),
+    }
+}
+
+/// A number as a reader wants it: exponent notation only for very large or small magnitudes.
+fn number(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-5..1e15).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
     }
 }
 
@@ -100,12 +164,29 @@ pub fn grid(text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
         );
     }
     for (name, v) in [("X0", x0), ("X1", x1), ("Z0", z0), ("Z1", z1)] {
-        if !v.is_finite() || v.abs() > 1e30 {
-            bail!("invalid --grid {name} = {v}: must be a finite number");
+        if !v.is_finite() || v.abs() > MAGNITUDE_LIMIT {
+            bail!(
+                "invalid --grid {name} = {}: must be a finite number of magnitude at most 1e30",
+                number(*v)
+            );
         }
     }
     if *z0 < 0.0 || *z1 < 0.0 {
-        bail!("invalid --grid depths Z0 = {z0}, Z1 = {z1}: must be >= 0 (z is the depth into the body)");
+        bail!(
+            "invalid --grid depths Z0 = {}, Z1 = {}: must be >= 0 (z is the depth into the body)",
+            number(*z0),
+            number(*z1)
+        );
+    }
+    for (first, last, a, b) in [("X0", "X1", x0, x1), ("Z0", "Z1", z0, z1)] {
+        if b < a {
+            bail!(
+                "invalid --grid {last} = {}: must be at least {first} = {} (the grid runs from \
+                 {first} to {last}, ends included)",
+                number(*b),
+                number(*a)
+            );
+        }
     }
     let at = |a: f64, b: f64, n: usize, i: usize| {
         if n == 1 {
@@ -185,20 +266,70 @@ pub fn report(
     })
 }
 
-/// Marches to the increment, evaluates the stresses and prints them.
+/// Points evaluated and written at a time: the output streams (a reader that stops after the
+/// first lines, `| head`, ends the run after this many points, not after all of them).
+const CHUNK: usize = 16_384;
+
+/// Marches to the increment, then evaluates the stresses and prints them chunk by chunk.
 pub fn run(config: &StressConfig) -> Result<()> {
-    let report = report(
+    let kept = stress::marched(
         &config.contact,
         &config.history,
         &config.options,
-        config.step,
-        &config.x,
-        &config.z,
-        &config.units,
+        &[config.step],
     )?;
-    emit(&match config.format {
-        Format::Table => report.table(),
-        Format::Csv => report.csv(),
-        Format::Json => report.json()? + "\n",
-    })
+    let state = kept
+        .into_iter()
+        .next()
+        .ok_or_else(|| anyhow!("the march did not reach step {}", config.step))?;
+    let bulk = state.load.bulk();
+    let evaluator = stress::Evaluator::new(&state.traction, bulk, &config.contact.material)?;
+    let head = StressReport {
+        step: state.step,
+        normal: state.load.normal(),
+        shear: state.load.shear(),
+        bulk,
+        half_width: state.half_width,
+        points: Vec::new(),
+        units: config.units.clone(),
+    };
+    let mut pieces = head.pieces(config.format)?;
+    let (x, z) = (&config.x, &config.z);
+    for start in (0..x.len()).step_by(CHUNK) {
+        let end = (start + CHUNK).min(x.len());
+        let field = evaluator
+            .field(&x[start..end], &z[start..end])
+            .map_err(|_| first_failure(&evaluator, config, start, end))?;
+        let rows: Vec<StressRow> = (start..end)
+            .map(|i| {
+                let s = field.at(i - start);
+                StressRow {
+                    x: x[i],
+                    z: z[i],
+                    sxx: s.sxx,
+                    szz: s.szz,
+                    syy: s.syy,
+                    sxz: s.sxz,
+                }
+            })
+            .collect();
+        emit(&pieces.rows(&rows)?)?;
+    }
+    emit(pieces.end())
+}
+
+/// The error of the first point of `start..end` that the evaluator refuses, named as the user
+/// wrote it (a surface point on a jump of the traction; the points were checked on reading).
+fn first_failure(
+    evaluator: &stress::Evaluator,
+    config: &StressConfig,
+    start: usize,
+    end: usize,
+) -> anyhow::Error {
+    (start..end)
+        .find_map(|i| {
+            let e = evaluator.field(&config.x[i..=i], &config.z[i..=i]).err()?;
+            Some(point_error(&config.origin.name(i), &e))
+        })
+        .unwrap_or_else(|| anyhow!("evaluating the stresses at points {} to {end}", start + 1))
 }

@@ -2,6 +2,7 @@
 //! stresses in the case's stress unit.
 
 use super::{Cell, Column, Style};
+use crate::args::Format;
 use crate::units::{Quantity, Units};
 use serde::Serialize;
 
@@ -79,5 +80,135 @@ impl StressReport {
     /// JSON: the increment, its load and the rows under `points`.
     pub fn json(&self) -> serde_json::Result<String> {
         serde_json::to_string_pretty(self)
+    }
+
+    /// The report in `format` a piece at a time, for output written as the rows are computed:
+    /// `self` holds the increment and no rows; the pieces, concatenated, are exactly what
+    /// [`StressReport::csv`], [`StressReport::table`] or [`StressReport::json`] (with a final
+    /// newline) give for the whole report.
+    pub fn pieces(&self, format: Format) -> serde_json::Result<Pieces<'_>> {
+        let (head, tail) = match format {
+            Format::Csv => (self.csv(), String::new()),
+            Format::Table => (self.table(), String::new()),
+            Format::Json => {
+                let empty = self.json()?;
+                let at = empty.find(EMPTY_POINTS).unwrap_or(empty.len());
+                let (head, tail) = empty.split_at(at);
+                (
+                    format!("{head}\"points\": ["),
+                    format!("\n  ]{}\n", &tail[EMPTY_POINTS.len().min(tail.len())..]),
+                )
+            }
+        };
+        Ok(Pieces {
+            report: self,
+            format,
+            head,
+            tail,
+            first: true,
+        })
+    }
+}
+
+/// The key of the rows in the JSON of a report without rows.
+const EMPTY_POINTS: &str = "\"points\": []";
+
+/// The pieces of a report written as its rows are computed ([`StressReport::pieces`]).
+pub struct Pieces<'a> {
+    report: &'a StressReport,
+    format: Format,
+    head: String,
+    tail: String,
+    first: bool,
+}
+
+impl Pieces<'_> {
+    /// The text of the next `rows` (preceded by the report's head the first time).
+    pub fn rows(&mut self, rows: &[StressRow]) -> serde_json::Result<String> {
+        let first = std::mem::replace(&mut self.first, false);
+        let mut o = if first {
+            self.head.clone()
+        } else {
+            String::new()
+        };
+        match self.format {
+            // Both repeat their headings for every call: keep only the rows.
+            Format::Csv => o.push_str(after_lines(&super::csv(&StressRow::COLUMNS, rows), 1)),
+            Format::Table => o.push_str(after_lines(
+                &super::table(&StressRow::COLUMNS, rows, &self.report.units),
+                2,
+            )),
+            Format::Json => {
+                for (i, row) in rows.iter().enumerate() {
+                    o.push_str(if first && i == 0 { "\n    " } else { ",\n    " });
+                    o.push_str(&serde_json::to_string_pretty(row)?.replace('\n', "\n    "));
+                }
+            }
+        }
+        Ok(o)
+    }
+
+    /// The text after the last row.
+    pub fn end(&self) -> &str {
+        &self.tail
+    }
+}
+
+/// `text` after its first `n` lines.
+fn after_lines(text: &str, n: usize) -> &str {
+    let mut rest = text;
+    for _ in 0..n {
+        rest = rest.split_once('\n').map_or("", |(_, r)| r);
+    }
+    rest
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn report(points: Vec<StressRow>) -> StressReport {
+        StressReport {
+            step: 7,
+            normal: 1000.0,
+            shear: -300.0,
+            bulk: 60.0,
+            half_width: 0.76,
+            points,
+            units: Units::default(),
+        }
+    }
+
+    #[test]
+    fn pieces_concatenate_to_the_whole_report_in_every_format() {
+        let rows: Vec<StressRow> = (0..7)
+            .map(|i| {
+                let v = i as f64;
+                StressRow {
+                    x: v - 3.0,
+                    z: 0.25 * v,
+                    sxx: -100.0 * v + 0.5,
+                    szz: -1e-12 * v,
+                    syy: 3.0,
+                    sxz: 1e20 * v,
+                }
+            })
+            .collect();
+        let whole = report(rows.clone());
+        let empty = report(Vec::new());
+        for format in [Format::Csv, Format::Table, Format::Json] {
+            let expected = match format {
+                Format::Csv => whole.csv(),
+                Format::Table => whole.table(),
+                Format::Json => whole.json().unwrap() + "\n",
+            };
+            let mut pieces = empty.pieces(format).unwrap();
+            let mut got = String::new();
+            for chunk in rows.chunks(3) {
+                got.push_str(&pieces.rows(chunk).unwrap());
+            }
+            got.push_str(pieces.end());
+            assert_eq!(got, expected, "{format:?}");
+        }
     }
 }

@@ -51,6 +51,10 @@ pub(super) fn add_node(
         return jp == 0.0 && jq == 0.0;
     }
     let r2 = u * u + z * z;
+    if r2 < f64::MIN_POSITIVE {
+        // A point within 1e-154 of the node: r^2 underflows, so take ln r and 1/w from r.
+        return add_near_node(s, jump, kink, u, z);
+    }
     let (lr, li) = (0.5 * r2.ln(), z.atan2(u));
     // (J + S w) log w, w = u + i z.
     let (cr, ci) = (jp + sp * u, sp * z);
@@ -62,6 +66,30 @@ pub(super) fn add_node(
     if !surface {
         // S log w + J / w, 1/w = (u - i z)/r2.
         let (ir, ii) = (u / r2, -z / r2);
+        s.dp[0] += sp * lr + jp * ir;
+        s.dp[1] += sp * li + jp * ii;
+        s.dq[0] += sq * lr + jq * ir;
+        s.dq[1] += sq * li + jq * ii;
+    }
+    true
+}
+
+/// [`add_node`]'s terms (after the constant `J`) at `w = u + i z` so close to the node that
+/// `u^2 + z^2` underflows: `ln r` and `1/w = (u/r - i z/r)/r` from `r = hypot(u, z)`.
+#[cold]
+fn add_near_node(s: &mut Sums, jump: [f64; 2], kink: [f64; 2], u: f64, z: f64) -> bool {
+    let [jp, jq] = jump;
+    let [sp, sq] = kink;
+    let r = u.hypot(z);
+    let (lr, li) = (r.ln(), z.atan2(u));
+    let (cr, ci) = (jp + sp * u, sp * z);
+    s.fp[0] += cr * lr - ci * li;
+    s.fp[1] += cr * li + ci * lr;
+    let (cr, ci) = (jq + sq * u, sq * z);
+    s.fq[0] += cr * lr - ci * li;
+    s.fq[1] += cr * li + ci * lr;
+    if z != 0.0 {
+        let (ir, ii) = ((u / r) / r, (-z / r) / r);
         s.dp[0] += sp * lr + jp * ir;
         s.dp[1] += sp * li + jp * ii;
         s.dq[0] += sq * lr + jq * ir;

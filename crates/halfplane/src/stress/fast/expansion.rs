@@ -22,7 +22,7 @@ use crate::quadrature::Rule;
 pub(super) const MAX_ORDER: usize = 64;
 
 /// The expansion order and the tables its translations use.
-pub(super) struct Expansions {
+pub(in crate::stress) struct Expansions {
     /// Terms per expansion.
     pub order: usize,
     /// `C(n + k, k)` at `k stride + n` (multipole to local), zero beyond `order`.

@@ -13,17 +13,19 @@
 //! the parent's neighbours' children that are not its own neighbours. A point's box is the first,
 //! going down, without near neighbours (all its field is then in the local expansion), or a box
 //! of the finest level, whose near elements are then summed by the exact closed form. Points
-//! outside the root box are at least `H` from the centre, four radii of the sources, and take the
-//! root multipole directly.
+//! four half-spans or more from the centre take the far field (`far.rs`), exactly as the direct
+//! route does; that includes every point outside the root box (at least `H` from the centre),
+//! except by rounding at the far field's radius, where the root multipole serves.
 //!
 //! Error: a local expansion of order `p` about a box of radius `r_t` = `w/sqrt 2` from sources
 //! within `r_s` of a centre `d >= sqrt((NEAR + 1)^2 + 1/4) w` away converges like
 //! `c^p`, `c = (r_s + r_t)/d`; `p` is chosen so that `c^p/(1 - c) <= TOLERANCE`.
 
-mod expansion;
+pub(super) mod expansion;
 
 use super::complex::C;
 use super::edge::SqrtEdge;
+use super::far::FarField;
 use super::strip::{add_edge, add_node, stresses, Sums};
 use super::traction::Traction;
 use expansion::{Expansions, MAX_ORDER};
@@ -275,7 +277,13 @@ impl<'a> Tree<'a> {
 
     /// `[sxx, szz, sxz]` from the traction at every point `(x[i], z[i])` (`z >= 0`, checked by
     /// the caller), or the index of the first surface point on a jump of the traction.
-    pub fn in_plane(&self, x: &[f64], z: &[f64]) -> Result<Vec<[f64; 3]>, usize> {
+    /// Points that `far` reaches take the far field (`far.rs`), exactly as the direct route does.
+    pub fn in_plane(
+        &self,
+        x: &[f64],
+        z: &[f64],
+        far: Option<&FarField>,
+    ) -> Result<Vec<[f64; 3]>, usize> {
         let mut out = vec![[0.0; 3]; x.len()];
         let mut bad = usize::MAX;
         let wl = self.width / (1u64 << self.finest) as f64;
@@ -285,6 +293,10 @@ impl<'a> Tree<'a> {
         let centre = self.origin + 0.5 * self.width;
         for (index, (&x, &z)) in x.iter().zip(z).enumerate() {
             let z = if z == 0.0 { 0.0 } else { z };
+            if let Some(far) = far.filter(|f| f.reaches(x, z)) {
+                out[index] = far.in_plane(x, z);
+                continue;
+            }
             let u = x - self.origin;
             if u < 0.0 || u >= self.width || z >= self.width {
                 let y = C(self.width, 0.0) / C(x - centre, z);
