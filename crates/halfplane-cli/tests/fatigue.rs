@@ -186,8 +186,21 @@ fn planes_3d_reports_tilted_planes_never_below_the_in_plane_ones() {
     };
     let in_plane = values(&small);
     let full = values(&small.replace("nx = 12", "nx = 12\nplanes = \"3d\""));
+    // The sampled parameters take the larger of both searches; the ones on the plane of the
+    // largest shear range need not grow (a tilted plane can carry less normal stress).
     for ((name, a, tilt_a), (_, b, tilt_b)) in in_plane.iter().zip(&full) {
-        assert!(*b >= a - 1e-12 * a.abs(), "{name}: 3d {b} vs in-plane {a}");
+        if [
+            "swt",
+            "fatemi_socie_max_plane",
+            "findley",
+            "crossland",
+            "ruiz_f1",
+            "ruiz_f2",
+        ]
+        .contains(&name.as_str())
+        {
+            assert!(*b >= a - 1e-12 * a.abs(), "{name}: 3d {b} vs in-plane {a}");
+        }
         if !tilt_a.is_nan() {
             assert_eq!(*tilt_a, 0.0, "{name}");
             assert!((0.0..=90.0).contains(tilt_b), "{name}: {tilt_b}");

@@ -370,7 +370,9 @@ fn the_3d_search_finds_planes_tilted_towards_y() {
     }
     assert!((y_3d.swt.tilt - 90.0).abs() < 0.06, "{:?}", y_3d.swt);
     assert!((y_3d.fatemi_socie.unwrap().tilt - 45.0).abs() < 1e-9);
-    // A marched Hertz cycle: every 3-D value at least the in-plane one.
+    // A marched Hertz cycle: every sampled 3-D value (SWT, max-plane Fatemi-Socie, Findley) at
+    // least the in-plane one. (The parameters on the plane of the largest shear range need not
+    // be: a tilted plane can have the larger shear range and the smaller normal stress.)
     let history = hertz_cycle(60.0);
     let cs = history.cycles().unwrap();
     let start = cs.first_step() + (cs.count() - 1) * cs.steps_per_cycle();
@@ -385,7 +387,8 @@ fn the_3d_search_finds_planes_tilted_towards_y() {
             .collect();
         let a = values(&fatigue::critical_planes_over(&h, &m, &c, Planes::InPlane));
         let b = values(&fatigue::critical_planes_over(&h, &m, &c, Planes::Full3d));
-        for (u, v) in a.iter().zip(&b) {
+        for j in [0, 2, 3] {
+            let (u, v) = (&a[j], &b[j]);
             assert!(
                 *v >= u - 1e-12 * u.abs(),
                 "at ({x}, {z}): 3-D {b:?} vs in-plane {a:?}"
