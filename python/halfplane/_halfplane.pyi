@@ -103,7 +103,9 @@ def stress_points(
     step: Optional[int] = None,
     cells: Optional[int] = None,
 ) -> Dict[str, Any]: ...
-def fatigue_report(case: Case, cells: Optional[int] = None) -> Tuple[str, str]: ...
+def fatigue_report(
+    case: Case, cells: Optional[int] = None
+) -> Tuple[str, str, List[str]]: ...
 def match_report(
     case: Case,
     profile: str,

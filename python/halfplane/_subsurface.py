@@ -6,6 +6,7 @@ from __future__ import annotations
 import io
 import json
 import numbers
+import warnings
 from typing import Any, Dict, Mapping, Optional, Tuple
 
 import numpy as np
@@ -98,8 +99,9 @@ class FatigueResult(Record):
     """The report of ``halfplane fatigue --json``: ``critical_distance`` (L, length unit, None
     when ``[fatigue]`` gives none), ``first_step`` and ``last_step`` (the steady cycle's
     increments, 1-based), ``units``, and ``parameters``, here a DataFrame with the columns of
-    ``fatigue --csv``: ``parameter, value, x, z, plane, step, point_method, line_method, cycles``
-    (``plane`` in degrees from +x towards +z; NaN where a column does not apply).
+    ``fatigue --csv``: ``parameter, value, x, z, plane, step, point_method, line_method, cycles,
+    tilt`` (``plane`` in degrees from +x towards +z, ``tilt`` of the plane's normal towards +y,
+    0 unless ``[fatigue] planes = "3d"``; NaN where a column does not apply).
     ``to_dict()`` is the JSON object itself."""
 
     def __init__(self, data: Mapping[str, Any], csv: str) -> None:
@@ -127,10 +129,13 @@ def fatigue(case: Case, cells: Optional[int] = None) -> FatigueResult:
     the same numbers as ``--json`` (``to_dict()``) and ``--csv`` (``.parameters``).
 
     ``cells`` overrides ``[solver] cells``. Raises :class:`InputError` naming the field when the
-    case has no ``[fatigue]`` or ``[history]`` or a constant is invalid. The GIL is released
-    while computing.
+    case has no ``[fatigue]`` or ``[history]`` or a constant is invalid. Each parameter left out
+    for want of its constants gives a ``UserWarning`` naming it and the fields it lacks (the
+    command's stderr lines). The GIL is released while computing.
     """
     if cells is not None:
         cells = _count("cells", cells)
-    csv, text = _halfplane.fatigue_report(case, cells)
+    csv, text, skipped = _halfplane.fatigue_report(case, cells)
+    for line in skipped:
+        warnings.warn(line, UserWarning, stacklevel=2)
     return FatigueResult(json.loads(text), csv)

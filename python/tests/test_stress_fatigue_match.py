@@ -99,6 +99,21 @@ def test_fatigue_equals_the_command(cli):
     )
 
 
+def test_fatigue_warns_about_each_parameter_it_leaves_out(cli, tmp_path):
+    # Failed before: a [fatigue] section without fatemi_socie_k dropped its rows silently.
+    text = open(FATIGUE).read().replace("fatemi_socie_k = 0.5", "")
+    text = text.replace("nx = 60", "nx = 8").replace("nz = 30", "nz = 4")
+    path = tmp_path / "case.toml"
+    path.write_text(text)
+    with pytest.warns(UserWarning) as caught:
+        got = halfplane.fatigue(halfplane.read_case(str(path)))
+    done = run_cli(cli, ["fatigue", str(path), "--csv"])
+    assert done.returncode == 0, done.stderr
+    assert [f"warning: {w.message}" for w in caught] == done.stderr.splitlines()
+    assert len(caught) == 2 and "fatigue.fatemi_socie_k" in str(caught[0].message)
+    assert "fatemi_socie" not in set(got.parameters["parameter"])
+
+
 def test_fatigue_names_what_the_case_lacks(cli):
     # No [history]: the command's message, word for word.
     with pytest.raises(halfplane.InputError, match=r"\[history\]") as raised:

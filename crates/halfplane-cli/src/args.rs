@@ -37,7 +37,8 @@ pub enum Command {
     /// tension) at a marched increment: sxx, szz, syy, sxz at the points of --at or on --grid.
     Stress(StressArgs),
     /// Fretting-fatigue parameters over the last cycle of [history] (SWT, Fatemi-Socie, Findley,
-    /// Crossland, Ruiz F1/F2, MWCM; critical distances and lives with the constants of [fatigue]).
+    /// Crossland, Ruiz F1/F2, MWCM, max-plane Fatemi-Socie, McDiarmid; critical distances and
+    /// lives with the constants of [fatigue]; a parameter left out is named on stderr).
     Fatigue(FatigueArgs),
     /// Will a crack grow? K_I and K_II of a straight surface-breaking crack ([crack]) over the
     /// last cycle of [history], with crack-face contact, against El Haddad's short-crack
@@ -269,9 +270,13 @@ pub enum MapParameter {
     /// Smith-Watson-Topper.
     #[value(name = "swt")]
     Swt,
-    /// Fatemi-Socie (needs fatemi_socie_k and yield_stress).
+    /// Fatemi-Socie on the plane of the largest shear strain range, as its authors define it
+    /// (needs fatemi_socie_k and yield_stress).
     #[value(name = "fatemi_socie")]
     FatemiSocie,
+    /// The Fatemi-Socie product at its largest over the planes (same constants).
+    #[value(name = "fatemi_socie_max_plane")]
+    FatemiSocieMaxPlane,
     /// Findley (needs findley_k).
     #[value(name = "findley")]
     Findley,
@@ -281,6 +286,9 @@ pub enum MapParameter {
     /// Modified Wohler Curve Method (needs axial_fatigue_limit and torsional_fatigue_limit).
     #[value(name = "mwcm")]
     Mwcm,
+    /// McDiarmid (needs mcdiarmid_shear_limit and ultimate_strength).
+    #[value(name = "mcdiarmid")]
+    McDiarmid,
 }
 
 #[derive(Args, Debug)]

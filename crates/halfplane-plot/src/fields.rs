@@ -94,6 +94,8 @@ fn display(parameter: Parameter) -> &'static str {
         Parameter::RuizF1 => "Ruiz F1",
         Parameter::RuizF2 => "Ruiz F2",
         Parameter::Mwcm => "MWCM",
+        Parameter::FatemiSocieMaxPlane => "Fatemi-Socie (max. plane)",
+        Parameter::McDiarmid => "McDiarmid",
         _ => "parameter",
     }
 }
@@ -120,7 +122,9 @@ pub fn fatigue_map_figure(
         values,
     };
     let unit = match parameter {
-        Parameter::Findley | Parameter::Crossland | Parameter::Mwcm => format!(" {}", units.stress),
+        Parameter::Findley | Parameter::Crossland | Parameter::Mwcm | Parameter::McDiarmid => {
+            format!(" {}", units.stress)
+        }
         _ => String::new(),
     };
     let mut series = contours(&map, name, &unit)?;

@@ -64,14 +64,15 @@ pub fn stress_points<'py>(
     Ok(out)
 }
 
-/// `halfplane fatigue CASE --cells CELLS`: the report as `--csv` and as `--json`.
+/// `halfplane fatigue CASE --cells CELLS`: the report as `--csv` and as `--json`, and the lines
+/// the command writes on stderr for the parameters `[fatigue]` leaves out.
 #[pyfunction]
 #[pyo3(signature = (case, cells=None))]
 pub fn fatigue_report(
     py: Python<'_>,
     case: &PyCase,
     cells: Option<usize>,
-) -> PyResult<(String, String)> {
+) -> PyResult<(String, String, Vec<String>)> {
     let case = &case.case;
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let settings = case.fatigue().map_err(input)?;
@@ -93,5 +94,5 @@ pub fn fatigue_report(
         .map_err(|e| errors::from_library(py, &e))?;
     let report = FatigueReport::new(&result, &case.units);
     let json = report.json().map_err(|e| input(e.into()))?;
-    Ok((report.csv(), json))
+    Ok((report.csv(), json, settings.skipped()))
 }

@@ -4,7 +4,7 @@
 
 use super::count::{count_in, RawCount};
 use anyhow::{anyhow, bail, Result};
-use halfplane::fatigue::{FatigueConstants, FatigueGrid, MAX_GRID_POINTS};
+use halfplane::fatigue::{FatigueConstants, FatigueGrid, Parameter, Planes, MAX_GRID_POINTS};
 use serde::Deserialize;
 
 /// `[fatigue]` as the case file gives it.
@@ -25,6 +25,9 @@ struct RawFatigue {
     endurance_range: Option<f64>,
     axial_fatigue_limit: Option<f64>,
     torsional_fatigue_limit: Option<f64>,
+    mcdiarmid_shear_limit: Option<f64>,
+    ultimate_strength: Option<f64>,
+    planes: Option<String>,
     nx: Option<RawCount>,
     nz: Option<RawCount>,
     width: Option<f64>,
@@ -94,6 +97,16 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<FatigueSettings> {
         (Some(_), None) => bail!("missing field fatigue.torsional_fatigue_limit: the Modified Wohler Curve Method needs it with axial_fatigue_limit (give tau_-1, the fully reversed torsional fatigue limit as an amplitude)"),
         (None, Some(_)) => bail!("missing field fatigue.axial_fatigue_limit: the Modified Wohler Curve Method needs it with torsional_fatigue_limit (give sigma_-1, the fully reversed axial fatigue limit as an amplitude)"),
     };
+    c = match (raw.mcdiarmid_shear_limit, raw.ultimate_strength) {
+        (Some(t), Some(u)) => c.with_mcdiarmid(t, u)?,
+        (None, None) => c,
+        (Some(_), None) => bail!("missing field fatigue.ultimate_strength: McDiarmid's criterion needs it with mcdiarmid_shear_limit (give sigma_u, the ultimate tensile strength)"),
+        (None, Some(_)) => bail!("missing field fatigue.mcdiarmid_shear_limit: McDiarmid's criterion needs it with ultimate_strength (give t_A,B, the fully reversed shear fatigue limit of the crack case as an amplitude)"),
+    };
+    let planes = match &raw.planes {
+        Some(name) => Planes::from_name(name)?,
+        None => Planes::InPlane,
+    };
     let count = |v: &Option<RawCount>, field: &str, default: usize| match v {
         Some(v) => count_in(v, field, 2, MAX_GRID_POINTS),
         None => Ok(default),
@@ -103,6 +116,30 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<FatigueSettings> {
         count(&raw.nz, "fatigue.nz", 50)?,
         raw.width.unwrap_or(1.5),
         raw.depth.unwrap_or(1.0),
-    )?;
+    )?
+    .with_planes(planes);
     Ok(FatigueSettings { constants: c, grid })
+}
+
+impl FatigueSettings {
+    /// One line per parameter that the constants leave out, naming it and the `[fatigue]` fields it
+    /// lacks (what `fatigue` warns about on stderr rather than dropping the row silently).
+    pub fn skipped(&self) -> Vec<String> {
+        let constants = &self.constants;
+        Parameter::ALL
+            .iter()
+            .filter_map(|&p| {
+                let missing = constants.missing_for(p);
+                (!missing.is_empty()).then(|| {
+                    let fields: Vec<String> =
+                        missing.iter().map(|m| format!("fatigue.{m}")).collect();
+                    format!(
+                        "{} not reported: [fatigue] does not give {}",
+                        p.name(),
+                        fields.join(" and ")
+                    )
+                })
+            })
+            .collect()
+    }
 }

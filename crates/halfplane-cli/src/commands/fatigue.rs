@@ -28,6 +28,8 @@ pub struct FatigueConfig {
     pub units: Units,
     /// Table, CSV or JSON.
     pub format: Format,
+    /// The parameters `[fatigue]` leaves out, one line each, for stderr.
+    pub skipped: Vec<String>,
 }
 
 impl FatigueConfig {
@@ -43,12 +45,17 @@ impl FatigueConfig {
             grid: settings.grid,
             units: case.units,
             format: args.format.format(),
+            skipped: settings.skipped(),
         })
     }
 }
 
-/// Runs the analysis and prints the report.
+/// Runs the analysis and prints the report; each parameter left out for want of its constants
+/// is named on stderr with what it lacks.
 pub fn run(config: &FatigueConfig) -> Result<()> {
+    for line in &config.skipped {
+        eprintln!("warning: {line}");
+    }
     let result = fatigue::analyse(
         &config.contact,
         &config.history,

@@ -200,6 +200,8 @@ impl PlotConfig {
                     MapParameter::Findley => Parameter::Findley,
                     MapParameter::Crossland => Parameter::Crossland,
                     MapParameter::Mwcm => Parameter::Mwcm,
+                    MapParameter::FatemiSocieMaxPlane => Parameter::FatemiSocieMaxPlane,
+                    MapParameter::McDiarmid => Parameter::McDiarmid,
                 };
                 let missing = settings.constants.missing_for(parameter);
                 if !missing.is_empty() {

@@ -1,5 +1,6 @@
 //! The `fatigue` report: one row per parameter, columns
-//! `parameter,value,x,z,plane,step,point_method,line_method,cycles` (a public interface).
+//! `parameter,value,x,z,plane,step,point_method,line_method,cycles,tilt` (a public interface;
+//! `tilt` was added with the 3-D plane search, at the end so that no column moves).
 
 use super::{Cell, Column, Style};
 use crate::units::{Quantity, Units};
@@ -18,6 +19,7 @@ pub struct FatigueRow {
     point_method: Option<f64>,
     line_method: Option<f64>,
     cycles: Option<f64>,
+    tilt: Option<f64>,
 }
 
 impl From<&ParameterResult> for FatigueRow {
@@ -32,6 +34,7 @@ impl From<&ParameterResult> for FatigueRow {
             point_method: p.point_method,
             line_method: p.line_method,
             cycles: p.cycles,
+            tilt: p.tilt,
         }
     }
 }
@@ -41,13 +44,14 @@ fn opt(v: Option<f64>) -> Cell {
 }
 
 impl FatigueRow {
-    /// The columns, in order (`plane` in degrees from +x towards +z).
-    pub const COLUMNS: [Column<Self>; 9] = {
+    /// The columns, in order (`plane` in degrees from +x towards +z, `tilt` of the plane's
+    /// normal towards +y in degrees, 0 unless `[fatigue] planes = "3d"`).
+    pub const COLUMNS: [Column<Self>; 10] = {
         use Quantity::{Length, None};
         use Style::Sig;
         [
             Column::<Self>::new("parameter", None, |r| Cell::Text(r.parameter.into()))
-                .table(12, Style::Fixed(0)),
+                .table(22, Style::Fixed(0)),
             Column::<Self>::new("value", None, |r| Cell::Num(r.value)).table(13, Sig(5)),
             Column::<Self>::new("x", Length, |r| Cell::Num(r.x)).table(11, Style::Fixed(5)),
             Column::<Self>::new("z", Length, |r| Cell::Num(r.z)).table(11, Style::Fixed(5)),
@@ -56,6 +60,7 @@ impl FatigueRow {
             Column::<Self>::new("point_method", None, |r| opt(r.point_method)).table(13, Sig(5)),
             Column::<Self>::new("line_method", None, |r| opt(r.line_method)).table(13, Sig(5)),
             Column::<Self>::new("cycles", None, |r| opt(r.cycles)).table(11, Sig(4)),
+            Column::<Self>::new("tilt", None, |r| opt(r.tilt)).table(6, Style::Fixed(2)),
         ]
     };
 }

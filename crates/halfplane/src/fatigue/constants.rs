@@ -22,6 +22,8 @@ pub struct FatigueConstants {
     pub(crate) endurance_range: Option<f64>,
     /// `(axial_fatigue_limit, torsional_fatigue_limit)`: sigma_-1 and tau_-1, set together.
     pub(crate) fatigue_limits: Option<(f64, f64)>,
+    /// `(mcdiarmid_shear_limit, ultimate_strength)`: t_A,B and sigma_u, set together.
+    pub(crate) mcdiarmid: Option<(f64, f64)>,
 }
 
 fn check(field: &str, value: f64, ok: bool, valid: &'static str) -> Result<f64> {
@@ -149,12 +151,32 @@ impl FatigueConstants {
         Ok(self)
     }
 
+    /// `mcdiarmid_shear_limit` t_A,B and `ultimate_strength` sigma_u for McDiarmid's criterion
+    /// (McDiarmid, FFEMS 14, 1991): t_A,B the fully reversed shear fatigue limit (amplitude) for
+    /// the crack case of the planes searched (case A: shear along the surface; case B: shear
+    /// driving the crack into the depth, as on the in-plane planes of a fretting contact), both
+    /// > 0 with `t_A,B < sigma_u` (a fatigue limit below the static strength).
+    pub fn with_mcdiarmid(mut self, shear_limit: f64, ultimate: f64) -> Result<Self> {
+        let shear_limit = positive("mcdiarmid_shear_limit", shear_limit)?;
+        let ultimate = positive("ultimate_strength", ultimate)?;
+        check(
+            "mcdiarmid_shear_limit",
+            shear_limit,
+            shear_limit < ultimate,
+            "below fatigue.ultimate_strength (the shear fatigue limit t_A,B of a metal lies below \
+             its ultimate tensile strength sigma_u)",
+        )?;
+        self.mcdiarmid = Some((shear_limit, ultimate));
+        Ok(self)
+    }
+
     /// The `[fatigue]` fields `parameter` needs that are not given (empty: it is evaluated).
     pub fn missing_for(&self, parameter: super::Parameter) -> Vec<&'static str> {
         use super::Parameter as P;
         let limits = self.fatigue_limits.is_some();
+        let mcdiarmid = self.mcdiarmid.is_some();
         let needs: &[(&'static str, bool)] = match parameter {
-            P::FatemiSocie => &[
+            P::FatemiSocie | P::FatemiSocieMaxPlane => &[
                 ("fatemi_socie_k", self.fatemi_socie_k.is_some()),
                 ("yield_stress", self.yield_stress.is_some()),
             ],
@@ -163,6 +185,10 @@ impl FatigueConstants {
             P::Mwcm => &[
                 ("axial_fatigue_limit", limits),
                 ("torsional_fatigue_limit", limits),
+            ],
+            P::McDiarmid => &[
+                ("mcdiarmid_shear_limit", mcdiarmid),
+                ("ultimate_strength", mcdiarmid),
             ],
             _ => &[],
         };

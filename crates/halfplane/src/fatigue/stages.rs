@@ -1,0 +1,316 @@
+//! The stages of [`super::analyse`]: the march to the steady cycle, the grid, each parameter's
+//! maximum (with its critical-distance values and life) and Ruiz on the surface.
+
+use super::{
+    critical_planes_over, fatemi_socie_life, swt_life, CriticalPlanes, FatigueConstants,
+    FatigueGrid, Parameter, ParameterResult, Planes,
+};
+use crate::error::{Error, Result};
+use crate::history::History;
+use crate::march::{march, MarchOptions, MarchResult};
+use crate::material::Material;
+use crate::normal::Contact;
+use crate::stress::{self, Stress, Traction};
+
+/// The steady (last) cycle of a march: its increments' tractions and what Ruiz needs.
+pub(super) struct SteadyCycle {
+    /// The increments of the cycle, 1-based.
+    pub steps: Vec<usize>,
+    /// Per increment: its step, bulk stress and traction.
+    states: Vec<(usize, f64, Traction)>,
+    /// Per cell, the largest `|q|` over the cycle.
+    q_max: Vec<f64>,
+    /// The march's result (cells, per-cycle slip ranges).
+    result: MarchResult,
+    /// The largest contact half-width of the history.
+    pub a_max: f64,
+    /// The material.
+    pub material: Material,
+}
+
+impl SteadyCycle {
+    /// Marches `history` (which must have cycles), keeping its last cycle.
+    pub fn march(contact: &Contact, history: &History, options: &MarchOptions) -> Result<Self> {
+        let structure = history.cycles().ok_or(Error::NoCycle {
+            what: "fatigue analysis",
+        })?;
+        let spc = structure.steps_per_cycle();
+        let start = structure.first_step() + (structure.count() - 1) * spc;
+        let p_max = history
+            .loads()
+            .iter()
+            .map(|p| p.normal())
+            .fold(0.0, f64::max);
+        let a_max = contact.half_width(p_max)?;
+        let mut states: Vec<(usize, f64, Traction)> = Vec::with_capacity(spc);
+        let mut q_max: Vec<f64> = Vec::new();
+        let mut failure = None;
+        let result = march(contact, history, options, |r, f| {
+            if r.step > start && failure.is_none() {
+                match Traction::from_march(r.half_width, f) {
+                    Ok(t) => states.push((r.step, r.load.bulk(), t)),
+                    Err(e) => failure = Some(e),
+                }
+                q_max.resize(f.x.len(), 0.0);
+                for (m, q) in q_max.iter_mut().zip(f.traction) {
+                    *m = m.max(q.abs());
+                }
+            }
+        })?;
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        Ok(Self {
+            steps: (start + 1..=start + spc).collect(),
+            states,
+            q_max,
+            result,
+            a_max,
+            material: contact.material,
+        })
+    }
+
+    /// The stress history over the cycle at each point `(x[i], z[i])`.
+    pub fn histories(&self, x: &[f64], z: &[f64]) -> Result<Vec<Vec<Stress>>> {
+        let mut h = vec![Vec::with_capacity(self.states.len()); x.len()];
+        for (_, bulk, t) in &self.states {
+            let f = stress::field(t, *bulk, &self.material, x, z)?;
+            for (i, h) in h.iter_mut().enumerate() {
+                h.push(f.at(i));
+            }
+        }
+        Ok(h)
+    }
+
+    fn step(&self, index: usize) -> usize {
+        self.steps[index.min(self.steps.len() - 1)]
+    }
+}
+
+/// The grid's axes and its points, row after row (z outer, x inner).
+pub(super) struct GridPoints {
+    pub grid_x: Vec<f64>,
+    pub grid_z: Vec<f64>,
+    pub px: Vec<f64>,
+    pub pz: Vec<f64>,
+}
+
+impl GridPoints {
+    pub fn new(grid: &FatigueGrid, a_max: f64) -> Self {
+        let grid_x: Vec<f64> = (0..grid.nx)
+            .map(|i| a_max * grid.width * (-1.0 + 2.0 * i as f64 / (grid.nx - 1) as f64))
+            .collect();
+        let grid_z: Vec<f64> = (0..grid.nz)
+            .map(|j| a_max * grid.depth * j as f64 / (grid.nz - 1) as f64)
+            .collect();
+        let (px, pz) = grid_z
+            .iter()
+            .flat_map(|&z| grid_x.iter().map(move |&x| (x, z)))
+            .unzip();
+        Self {
+            grid_x,
+            grid_z,
+            px,
+            pz,
+        }
+    }
+}
+
+/// A parameter's value at a point, its plane (angle, tilt) and the index of its peak.
+type Picked = (f64, Option<(f64, f64)>, usize);
+
+/// `parameter` from the parameters at one point (`None`: not evaluated, or Ruiz).
+fn pick(p: &CriticalPlanes, parameter: Parameter) -> Option<Picked> {
+    let plane = |c: super::Critical| (c.value, Some((c.angle, c.tilt)), c.index);
+    match parameter {
+        Parameter::Swt => Some(plane(p.swt)),
+        Parameter::FatemiSocie => p.fatemi_socie.map(plane),
+        Parameter::FatemiSocieMaxPlane => p.fatemi_socie_max_plane.map(plane),
+        Parameter::Findley => p.findley.map(plane),
+        Parameter::Crossland => p.crossland.map(|(v, i)| (v, None, i)),
+        Parameter::Mwcm => p.mwcm.map(plane),
+        Parameter::McDiarmid => p.mcdiarmid.map(plane),
+        Parameter::RuizF1 | Parameter::RuizF2 => None,
+    }
+}
+
+/// Every evaluated parameter's map over the grid, in the order of [`Parameter`].
+pub(super) fn maps(planes: &[CriticalPlanes]) -> Vec<(Parameter, Vec<f64>)> {
+    Parameter::ALL
+        .iter()
+        .filter_map(|&parameter| {
+            let map: Option<Vec<f64>> = planes
+                .iter()
+                .map(|p| pick(p, parameter).map(|v| v.0))
+                .collect();
+            map.map(|m| (parameter, m))
+        })
+        .collect()
+}
+
+/// Each grid parameter's maximum, with its point and line methods and its life.
+pub(super) fn maxima(
+    cycle: &SteadyCycle,
+    points: &GridPoints,
+    planes: &[CriticalPlanes],
+    constants: &FatigueConstants,
+    search: Planes,
+) -> Result<Vec<ParameterResult>> {
+    let material = cycle.material;
+    let shear_modulus = material.youngs_modulus() / (2.0 * (1.0 + material.poisson_ratio()));
+    let mut parameters = Vec::new();
+    for parameter in Parameter::ALL {
+        let Some((k, (value, plane, index))) = planes
+            .iter()
+            .enumerate()
+            .filter_map(|(k, p)| pick(p, parameter).map(|v| (k, v)))
+            .max_by(|a, b| a.1 .0.total_cmp(&b.1 .0))
+        else {
+            continue;
+        };
+        let (x, z) = (points.px[k], points.pz[k]);
+        let (point_method, line_method) = match constants.critical_distance() {
+            Some(l) => {
+                let (p, m) = critical_distance_values(cycle, constants, search, parameter, x, l)?;
+                (Some(p), Some(m))
+            }
+            None => (None, None),
+        };
+        let basis = point_method.unwrap_or(value);
+        let cycles = match parameter {
+            Parameter::Swt => swt_life(basis, material.youngs_modulus(), constants),
+            Parameter::FatemiSocie | Parameter::FatemiSocieMaxPlane => {
+                fatemi_socie_life(basis, shear_modulus, constants)
+            }
+            _ => None,
+        };
+        parameters.push(ParameterResult {
+            parameter,
+            value,
+            x,
+            z,
+            angle: plane.map(|p| p.0),
+            tilt: plane.map(|p| p.1),
+            step: cycle.step(index),
+            point_method,
+            line_method,
+            cycles,
+        });
+    }
+    Ok(parameters)
+}
+
+/// The point method (the parameter at depth `L/2` below `x`) and the line method (its mean over
+/// `0 <= z <= 2L`, Simpson's rule on 33 points).
+fn critical_distance_values(
+    cycle: &SteadyCycle,
+    constants: &FatigueConstants,
+    search: Planes,
+    parameter: Parameter,
+    x: f64,
+    l: f64,
+) -> Result<(f64, f64)> {
+    const LINE: usize = 33;
+    let mut lz: Vec<f64> = (0..LINE)
+        .map(|j| 2.0 * l * j as f64 / (LINE - 1) as f64)
+        .collect();
+    lz.push(0.5 * l);
+    let lx = vec![x; lz.len()];
+    let values: Vec<f64> = cycle
+        .histories(&lx, &lz)?
+        .iter()
+        .map(|h| {
+            let p = critical_planes_over(h, &cycle.material, constants, search);
+            pick(&p, parameter).map_or(0.0, |v| v.0)
+        })
+        .collect();
+    let mut sum = values[0] + values[LINE - 1];
+    for (j, v) in values.iter().enumerate().take(LINE - 1).skip(1) {
+        sum += if j % 2 == 1 { 4.0 } else { 2.0 } * v;
+    }
+    Ok((values[LINE], sum / (3.0 * (LINE - 1) as f64)))
+}
+
+/// Ruiz's parameters and the surface profiles.
+pub(super) struct Surface {
+    pub parameters: Vec<ParameterResult>,
+    pub x: Vec<f64>,
+    pub sxx_max: Vec<f64>,
+    pub f2_profile: Vec<f64>,
+    pub sxx: Vec<Vec<f64>>,
+}
+
+/// Ruiz on the surface (Ruiz, Boddington and Chen, Exp. Mech. 24, 1984; Nowell and Hills, Wear
+/// 136, 1990), at the cell centres in contact at some increment: `F1 = max(tau delta)`,
+/// `F2 = max(sxx tau delta)`, `tau` the largest `|q|` over the cycle, `delta` half the
+/// peak-to-peak slip of the last cycle, `sxx` the largest surface `sxx` over the cycle.
+pub(super) fn ruiz(cycle: &SteadyCycle) -> Result<Surface> {
+    let result = &cycle.result;
+    let spc = cycle.steps.len();
+    let slip_amplitude: Vec<f64> = result
+        .cycles
+        .last()
+        .map(|c| c.slip_range.iter().map(|r| 0.5 * r).collect())
+        .unwrap_or_else(|| vec![0.0; result.x.len()]);
+    let inside: Vec<usize> = (0..result.x.len())
+        .filter(|&i| result.x[i].abs() < cycle.a_max)
+        .collect();
+    let x: Vec<f64> = inside.iter().map(|&i| result.x[i]).collect();
+    let surface = cycle.histories(&x, &vec![0.0; x.len()])?;
+    let sxx = (0..spc)
+        .map(|k| {
+            surface
+                .iter()
+                .map(|h| h.get(k).map_or(0.0, |s| s.sxx))
+                .collect()
+        })
+        .collect();
+    let mut sxx_max = Vec::with_capacity(inside.len());
+    let mut f2_profile = Vec::with_capacity(inside.len());
+    let mut f1 = (f64::NEG_INFINITY, 0usize);
+    let mut f2 = (f64::NEG_INFINITY, 0usize, 0usize);
+    for (j, &i) in inside.iter().enumerate() {
+        let (peak_at, peak) = surface[j]
+            .iter()
+            .enumerate()
+            .map(|(k, s)| (k, s.sxx))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap_or((0, 0.0));
+        let td = cycle.q_max.get(i).copied().unwrap_or(0.0) * slip_amplitude[i];
+        sxx_max.push(peak);
+        f2_profile.push(peak * td);
+        if td > f1.0 {
+            f1 = (td, j);
+        }
+        if peak * td > f2.0 {
+            f2 = (peak * td, j, peak_at);
+        }
+    }
+    let mut parameters = Vec::new();
+    if !inside.is_empty() {
+        for (parameter, value, j, k) in [
+            (Parameter::RuizF1, f1.0, f1.1, spc - 1),
+            (Parameter::RuizF2, f2.0, f2.1, f2.2),
+        ] {
+            parameters.push(ParameterResult {
+                parameter,
+                value,
+                x: x[j],
+                z: 0.0,
+                angle: None,
+                tilt: None,
+                step: cycle.step(k),
+                point_method: None,
+                line_method: None,
+                cycles: None,
+            });
+        }
+    }
+    Ok(Surface {
+        parameters,
+        x,
+        sxx_max,
+        f2_profile,
+        sxx,
+    })
+}
