@@ -153,6 +153,10 @@ pub struct StressArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+    /// Run even when the march it needs is estimated to take more than 8 hours of one core
+    /// (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
     // csv and table: one row per point, columns x,z,sxx,szz,syy,sxz.
     #[command(flatten)]
     pub format: FormatArgs,
@@ -166,6 +170,10 @@ pub struct FatigueArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+    /// Run even when the march it needs is estimated to take more than 8 hours of one core
+    /// (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
     // csv and table: one row per parameter.
     #[command(flatten)]
     pub format: FormatArgs,
@@ -179,6 +187,10 @@ pub struct CrackArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+    /// Run even when the march it needs is estimated to take more than 8 hours of one core
+    /// (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
     // csv and table: one row per crack length.
     #[command(flatten)]
     pub format: FormatArgs,

@@ -162,6 +162,24 @@ pub fn check_march(
     )
 }
 
+/// [`check_march`] for a command that marches the case's whole history before it computes
+/// (`stress`, `fatigue`, `crack`), unless `no_size_limit`; `cells` is `--cells` as given.
+pub fn check_case_march(
+    history: &History,
+    options: &MarchOptions,
+    cells: Option<usize>,
+    no_size_limit: bool,
+) -> Result<(), TooLarge> {
+    if no_size_limit {
+        return Ok(());
+    }
+    let field = match cells {
+        Some(n) => format!("--cells {n}"),
+        None => format!("solver.cells = {}", options.cells()),
+    };
+    check_march(history.loads().len(), options, &field)
+}
+
 /// Refuses recorded fields (four f64 per cell and increment) above [`MEMORY_LIMIT_BYTES`].
 pub fn check_fields_memory(
     increments: usize,

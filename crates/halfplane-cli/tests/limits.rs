@@ -74,6 +74,27 @@ fn a_march_on_a_million_cells_is_refused_at_once() {
 }
 
 #[test]
+fn stress_fatigue_and_crack_refuse_the_march_they_would_need() {
+    // Each marches the case's history first; before this check `fatigue --cells 1000000` ran for
+    // hours with no output. examples/crack.toml has 140 increments: 1e12 x 140 x 5e-10 s = 19.4
+    // hours; examples/fatigue.toml has 140 as well.
+    for (command, case) in [
+        ("fatigue", "fatigue.toml"),
+        ("crack", "crack.toml"),
+        ("stress", "fatigue.toml"),
+    ] {
+        let case = example(case);
+        let mut args = vec![command, case.as_str(), "--cells", "1000000"];
+        if command == "stress" {
+            args.extend(["--grid", "0,1,2,0,1,2"]);
+        }
+        let o = run_briefly(&args);
+        assert_refused(&o, &["--cells 1000000 with", "limit of 8.0 hours"]);
+        assert!(o.stdout.is_empty(), "{command}");
+    }
+}
+
+#[test]
 fn the_cells_of_the_case_file_are_named_when_they_make_the_march_too_long() {
     let dir = scratch("limits-case-cells");
     let case = dir.join("case.toml");

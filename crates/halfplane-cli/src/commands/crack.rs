@@ -37,9 +37,12 @@ impl CrackConfig {
         let case = crate::case::load(&args.case)?;
         let crack = case.crack()?;
         let constants = case.fatigue()?.constants;
+        let history = case.history()?;
+        let options = case.solver_with_cells(args.cells)?;
+        crate::limits::check_case_march(&history, &options, args.cells, args.no_size_limit)?;
         Ok(Self {
-            history: case.history()?,
-            options: case.solver_with_cells(args.cells)?,
+            history,
+            options,
             contact: case.contact,
             constants,
             crack,

@@ -44,6 +44,8 @@ impl StressConfig {
     pub fn resolve(args: &StressArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
         let history = case.history()?;
+        let options = case.solver_with_cells(args.cells)?;
+        crate::limits::check_case_march(&history, &options, args.cells, args.no_size_limit)?;
         let step = check_step(args.step, &history, "--step")?;
         let (x, z, origin) = match (&args.at, &args.grid) {
             (Some(path), _) => {
@@ -68,7 +70,7 @@ impl StressConfig {
             }
         };
         Ok(Self {
-            options: case.solver_with_cells(args.cells)?,
+            options,
             contact: case.contact,
             history,
             step,
