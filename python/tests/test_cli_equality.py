@@ -119,5 +119,6 @@ def test_cells_override_as_the_command(cli):
     bad = run_cli(cli, ["march", path, "--cells", "7"])
     with pytest.raises(halfplane.InputError) as raised:
         halfplane.march(halfplane.read_case(path), cells=7)
-    assert str(raised.value) == cli_error(bad)
-    assert "--cells" in str(raised.value)
+    # The same message, naming the keyword the Python caller wrote instead of the flag.
+    assert str(raised.value) == cli_error(bad).replace("--cells", "cells")
+    assert "--cells" not in str(raised.value)

@@ -47,6 +47,9 @@ def test_no_size_limit_lets_a_refused_march_start():
     # The march refused above starts with no_size_limit=True (its 5.8 GB are reserved, and
     # filled only as it goes), and Ctrl-C ends it like any march.
     case = halfplane.Case.from_toml(CYCLE.replace("cycles = 3", "cycles = 1000"))
+    # Python's own Ctrl-C handler: importing dask_jobqueue (the Slurm recipe's test) replaces it
+    # with one that exits, which would make the outcome depend on the test order.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
@@ -54,3 +57,4 @@ def test_no_size_limit_lets_a_refused_march_start():
             halfplane.march(case, cells=2000, fields=True, no_size_limit=True)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
