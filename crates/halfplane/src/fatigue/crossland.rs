@@ -267,12 +267,12 @@ mod tests {
     #[test]
     fn degenerate_paths_give_the_minimum_covering_ball() {
         let mut rng = Rng(7);
-        for case in 0..4000 {
+        for case in 0..6000 {
             let n = 2 + case % 7;
             let scale = 10f64.powi((case % 9) as i32 - 4);
             let origin = rng.point(scale * 10.0);
             let (e1, e2) = (rng.point(1.0), rng.point(1.0));
-            let kind = case % 5;
+            let kind = case % 6;
             let mut p: Vec<P> = (0..n)
                 .map(|_| {
                     let (s, t) = (rng.unit(), rng.unit());
@@ -287,7 +287,9 @@ mod tests {
                         3 => std::array::from_fn(|d| {
                             origin[d] + scale * (s * e1[d] + t * e2[d] + off[d])
                         }),
-                        _ => std::array::from_fn(|d| origin[d] + scale * (s * e1[d] + off[d] * t)),
+                        4 => std::array::from_fn(|d| origin[d] + scale * (s * e1[d] + off[d] * t)),
+                        // A lattice: many ties (cospherical subsets), as in the fuzzed path.
+                        _ => std::array::from_fn(|_| scale * (2.0 * rng.unit()).round() * 0.5),
                     }
                 })
                 .collect();
