@@ -204,7 +204,7 @@ pub(crate) fn search(history: &[Stress], e: Elastic, c: &FatigueConstants) -> Pl
         if let Some(b) = best[p] {
             let mut local = best;
             for k in -20..=20 {
-                let angle = (b.angle + 0.05 * k as f64).rem_euclid(180.0);
+                let angle = half_turn(b.angle + 0.05 * k as f64);
                 consider(angle, &mut local);
             }
             best[p] = local[p];
@@ -248,12 +248,48 @@ pub(crate) fn max_shear_plane(history: &[Stress], e: Elastic) -> (f64, OnPlane) 
             }
         }
     }
-    let angle = (0.5 * f64::atan2(-d, f).to_degrees()).rem_euclid(180.0);
-    let twin = (angle + 90.0).rem_euclid(180.0);
+    let angle = half_turn(0.5 * f64::atan2(-d, f).to_degrees());
+    let twin = half_turn(angle + 90.0);
     let (p, q) = (on_plane(history, e, angle), on_plane(history, e, twin));
     if q.n_max > p.n_max {
         (twin, q)
     } else {
         (angle, p)
+    }
+}
+
+/// `degrees` folded into [0, 180). `rem_euclid` alone returns 180.0 itself for a negative angle
+/// within rounding of 0 (-1e-17 + 180 rounds to 180), which names no plane of the range.
+pub(super) fn half_turn(degrees: f64) -> f64 {
+    let folded = degrees.rem_euclid(180.0);
+    if folded < 180.0 {
+        folded
+    } else {
+        0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::half_turn;
+
+    #[test]
+    fn plane_angles_stay_below_a_half_turn() {
+        // The fuzz target `fatigue_constants` found a plane reported at 180.0: rem_euclid of an
+        // angle a rounding step below 0 rounds up to the modulus itself.
+        assert_eq!((-1e-17_f64).rem_euclid(180.0), 180.0);
+        for (given, folded) in [
+            (-1e-17, 0.0),
+            (0.0, 0.0),
+            (180.0, 0.0),
+            (-90.0, 90.0),
+            (270.0, 90.0),
+        ] {
+            assert_eq!(half_turn(given), folded, "{given}");
+        }
+        for k in -1000..1000 {
+            let a = half_turn(k as f64 * 0.37 - 1e-15);
+            assert!((0.0..180.0).contains(&a), "{a}");
+        }
     }
 }

@@ -9,7 +9,7 @@
 //! by a pattern search to 0.05 degree. The plane of the largest shear range is found exactly.
 
 use super::constants::FatigueConstants;
-use super::plane::{self, on_shear_plane, Critical, Elastic, OnPlane, PlaneParameters};
+use super::plane::{self, half_turn, on_shear_plane, Critical, Elastic, OnPlane, PlaneParameters};
 use crate::stress::Stress;
 
 /// A plane's unit normal and two unit shear directions on it.
@@ -91,7 +91,7 @@ fn fold(angle: f64, tilt: f64) -> (f64, f64) {
     } else {
         (angle, b)
     };
-    (angle.rem_euclid(180.0), b)
+    (half_turn(angle), b)
 }
 
 /// The 3-D plane of the largest shear stress range, exactly: between two states the largest
