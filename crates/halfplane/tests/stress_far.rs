@@ -267,3 +267,63 @@ fn a_point_a_rounding_level_distance_from_a_node_has_the_stresses_of_the_node() 
         }
     }
 }
+
+#[test]
+fn points_a_rounding_level_depth_below_nodes_and_edges_have_the_surface_stresses() {
+    // Found by the stress_points fuzz target: x = -1.3e-33, z = 1e-300 under a three-node contact
+    // (edges at -1 and 1, a node at 0) gave NaN: in the square-root edge intervals' closed form
+    // `omega - 1` is then of size z/h and the complex logarithm's `|w|^2` underflowed, ln 0 =
+    // -inf, and the cancelling infinities made NaN. The scan below found three more: z = 5e-324
+    // (lost in `sqrt(omega)`), z = 5e-324 under an edge node (`0 * inf` in the node's `J/w`), and
+    // x = 1e-300 from an edge at 0, even on the surface. Failed before the fix. The stresses are
+    // continuous up to the surface: within O(z ln z) (a kink at a node) or O(sqrt(z)) (an edge)
+    // of those at (x, 0), below 1e-14 at z = 1e-30, so 1e-12 of the traction's largest value (2)
+    // bounds both that and the rounding of the sums.
+    let t = Traction::contact(&[-1.0, 0.0, 1.0], &[0.0, 2.0, 0.0], &[0.0, 0.7, 0.0]).unwrap();
+    let five = Traction::contact(
+        &[-1.0, -0.5, 0.0, 0.5, 1.0],
+        &[0.0, 2.0, 1.5, 1.0, 0.0],
+        &[0.0, -1.0, 0.5, 1.0, 0.0],
+    )
+    .unwrap();
+    // An edge at 0, where x itself can be a rounding-level distance from it.
+    let at_zero = Traction::contact(&[0.0, 0.5, 1.0], &[0.0, 2.0, 0.0], &[0.0, 0.7, 0.0]).unwrap();
+    let m = material();
+    for (t, nodes) in [
+        (&t, vec![-1.0, 0.0, 1.0]),
+        (&five, vec![-1.0, -0.5, 0.0, 0.5, 1.0]),
+        (&at_zero, vec![0.0, 0.5, 1.0]),
+    ] {
+        let mut xs = vec![-1.3e-33, 1e-300, 1e-320, -1.0 - 1e-17, 1.0 + 1e-17];
+        xs.extend(&nodes);
+        // Among 100 other points the fast route's tree takes over (`docs/stress.md`).
+        let (mut gx, mut gz): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
+        for i in 0..100 {
+            gx.push(-1.5 + 3.0 * (i % 10) as f64 / 9.0);
+            gz.push((i / 10) as f64 / 9.0);
+        }
+        for &px in &xs {
+            let surface = stress::at(t, 0.0, &m, px, 0.0).unwrap();
+            for pz in [1e-300, 1e-200, 1e-160, 1e-30, 5e-324] {
+                let alone = stress::at(t, 0.0, &m, px, pz).unwrap();
+                let (mut x, mut z) = (gx.clone(), gz.clone());
+                x.push(px);
+                z.push(pz);
+                let among = stress::field(t, 0.0, &m, &x, &z).unwrap().at(100);
+                for s in [alone, among] {
+                    for (a, b) in [
+                        (s.sxx, surface.sxx),
+                        (s.szz, surface.szz),
+                        (s.syy, surface.syy),
+                        (s.sxz, surface.sxz),
+                    ] {
+                        assert!(
+                            (a - b).abs() <= 2e-12,
+                            "({px:e}, {pz:e}): {s:?} against {surface:?} on the surface"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -89,11 +89,14 @@ fn add_near_node(s: &mut Sums, jump: [f64; 2], kink: [f64; 2], u: f64, z: f64) -
     s.fq[0] += cr * lr - ci * li;
     s.fq[1] += cr * li + ci * lr;
     if z != 0.0 {
+        // 1/w overflows at r < 1e-308; where J = 0 (a continuous traction) its term is exactly
+        // 0, not 0 * inf = NaN (z = 5e-324 under an edge node, found by `stress_points`).
         let (ir, ii) = ((u / r) / r, (-z / r) / r);
-        s.dp[0] += sp * lr + jp * ir;
-        s.dp[1] += sp * li + jp * ii;
-        s.dq[0] += sq * lr + jq * ir;
-        s.dq[1] += sq * li + jq * ii;
+        let over = |j: f64, v: f64| if j == 0.0 { 0.0 } else { j * v };
+        s.dp[0] += sp * lr + over(jp, ir);
+        s.dp[1] += sp * li + over(jp, ii);
+        s.dq[0] += sq * lr + over(jq, ir);
+        s.dq[1] += sq * li + over(jq, ii);
     }
     true
 }
