@@ -114,3 +114,24 @@ impl Progress {
         }
     }
 }
+
+/// Runs `work`, printing `label: running, T elapsed` on stderr every interval until it returns,
+/// for a long computation with no count to report (`fatigue`, `stress` and `crack` march and
+/// integrate inside the library): a long run is never silent, on a terminal or not.
+pub fn while_running<T>(label: &'static str, work: impl FnOnce() -> T) -> T {
+    let every = interval().max(Duration::from_millis(100));
+    let start = Instant::now();
+    let (done, wait) = std::sync::mpsc::channel::<()>();
+    std::thread::scope(|s| {
+        s.spawn(move || {
+            while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) = wait.recv_timeout(every) {
+                let elapsed = crate::limits::duration(start.elapsed().as_secs_f64());
+                crate::output::note(&format!("{label}: running, {elapsed} elapsed"));
+            }
+        });
+        let out = work();
+        // The receiver may have gone only if its thread ended, which it does only on this send.
+        let _ = done.send(());
+        out
+    })
+}

@@ -95,6 +95,21 @@ fn stress_fatigue_and_crack_refuse_the_march_they_would_need() {
 }
 
 #[test]
+fn fatigue_says_it_is_running_when_stderr_is_not_a_terminal() {
+    // Before, a long fatigue run printed nothing until its table; now a line per interval.
+    let o = command(&["fatigue", &example("fatigue.toml"), "--csv"])
+        .env("HALFPLANE_PROGRESS_SECONDS", "0.1")
+        .output()
+        .expect("run halfplane");
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("fatigue: running, "),
+        "no progress line in: {err}"
+    );
+}
+
+#[test]
 fn the_cells_of_the_case_file_are_named_when_they_make_the_march_too_long() {
     let dir = scratch("limits-case-cells");
     let case = dir.join("case.toml");

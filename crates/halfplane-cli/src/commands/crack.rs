@@ -54,13 +54,15 @@ impl CrackConfig {
 
 /// Runs the analysis and prints the report.
 pub fn run(config: &CrackConfig) -> Result<()> {
-    let result = crack::analyse(
-        &config.contact,
-        &config.history,
-        &config.options,
-        &config.constants,
-        &config.crack,
-    )?;
+    let result = crate::progress::while_running("crack", || {
+        crack::analyse(
+            &config.contact,
+            &config.history,
+            &config.options,
+            &config.constants,
+            &config.crack,
+        )
+    })?;
     let report = CrackReport::new(&result, &config.units);
     emit(&match config.format {
         Format::Table => report.table(),

@@ -59,13 +59,15 @@ pub fn run(config: &FatigueConfig) -> Result<()> {
     for line in &config.skipped {
         eprintln!("warning: {line}");
     }
-    let result = fatigue::analyse(
-        &config.contact,
-        &config.history,
-        &config.options,
-        &config.constants,
-        &config.grid,
-    )?;
+    let result = crate::progress::while_running("fatigue", || {
+        fatigue::analyse(
+            &config.contact,
+            &config.history,
+            &config.options,
+            &config.constants,
+            &config.grid,
+        )
+    })?;
     let report = FatigueReport::new(&result, &config.units);
     emit(&match config.format {
         Format::Table => report.table(),

@@ -274,12 +274,14 @@ const CHUNK: usize = 16_384;
 
 /// Marches to the increment, then evaluates the stresses and prints them chunk by chunk.
 pub fn run(config: &StressConfig) -> Result<()> {
-    let kept = stress::marched(
-        &config.contact,
-        &config.history,
-        &config.options,
-        &[config.step],
-    )?;
+    let kept = crate::progress::while_running("stress", || {
+        stress::marched(
+            &config.contact,
+            &config.history,
+            &config.options,
+            &[config.step],
+        )
+    })?;
     let state = kept
         .into_iter()
         .next()
