@@ -332,6 +332,10 @@ pub struct FigureArgs {
     /// Output file, ending in .svg or .png.
     #[arg(long, short)]
     pub output: PathBuf,
+    /// Draw even when the march the figure needs is estimated to take more than 8 hours of one
+    /// core (README, "Size limits").
+    #[arg(long)]
+    pub no_size_limit: bool,
 }
 
 #[derive(Args, Debug)]

@@ -94,6 +94,33 @@ fn stress_fatigue_and_crack_refuse_the_march_they_would_need() {
     }
 }
 
+#[cfg(feature = "plot")] // draws figures
+#[test]
+fn figures_refuse_the_march_they_would_need() {
+    // Before, `plot stress-map --cells 1000000` marched for hours with no output.
+    let dir = scratch("limits-figures");
+    let out = dir.join("f.svg");
+    let (fatigue, cycle) = (example("fatigue.toml"), example("march-cycle.toml"));
+    for args in [
+        vec!["plot", "stress-map", fatigue.as_str()],
+        vec!["plot", "fatigue-map", fatigue.as_str()],
+        vec!["plot", "surface-profiles", fatigue.as_str()],
+        vec!["plot", "march-fields", cycle.as_str()],
+        vec!["plot", "march-zones", cycle.as_str()],
+    ] {
+        let mut args = args;
+        args.extend([
+            "-o",
+            out.to_str().expect("utf-8 path"),
+            "--cells",
+            "1000000",
+        ]);
+        let o = run_briefly(&args);
+        assert_refused(&o, &["--cells 1000000 with", "limit of 8.0 hours"]);
+        assert!(!out.exists(), "{args:?} drew a figure");
+    }
+}
+
 #[test]
 fn fatigue_says_it_is_running_when_stderr_is_not_a_terminal() {
     // Before, a long fatigue run printed nothing until its table; now a line per interval.

@@ -132,7 +132,7 @@ impl PlotConfig {
                 let cycle = case.cycle()?;
                 let points = super::evolve::points(a.points)?;
                 let overlay = match a.march {
-                    true => Some((case.history()?, case.solver_with_cells(a.cells)?)),
+                    true => Some(marching(&case, case.history()?, a.cells, &a.figure)?),
                     false => None,
                 };
                 let figure = FigureConfig::Evolution {
@@ -144,8 +144,7 @@ impl PlotConfig {
             }
             PlotCommand::MarchFields(a) => {
                 let case = load(&a.figure)?;
-                let history = case.history()?;
-                let options = case.solver_with_cells(a.cells)?;
+                let (history, options) = marching(&case, case.history()?, a.cells, &a.figure)?;
                 let steps = steps(&history, &a.steps)?;
                 let figure = FigureConfig::MarchFields {
                     history,
@@ -159,8 +158,7 @@ impl PlotConfig {
             }
             PlotCommand::MarchZones(a) => {
                 let case = load(&a.figure)?;
-                let history = case.history()?;
-                let options = case.solver_with_cells(a.cells)?;
+                let (history, options) = marching(&case, case.history()?, a.cells, &a.figure)?;
                 (
                     &a.figure,
                     case,
@@ -176,8 +174,7 @@ impl PlotConfig {
             }
             PlotCommand::StressMap(a) => {
                 let case = load(&a.figure)?;
-                let history = case.history()?;
-                let options = case.solver_with_cells(a.cells)?;
+                let (history, options) = marching(&case, case.history()?, a.cells, &a.figure)?;
                 let last = history.loads().len();
                 let step = a.step.unwrap_or(last);
                 if step == 0 || step > last {
@@ -215,9 +212,10 @@ impl PlotConfig {
                             .join(" and ")
                     );
                 }
+                let (history, options) = marching(&case, cyclic(&case)?, a.cells, &a.figure)?;
                 let figure = FigureConfig::Fatigue {
-                    history: cyclic(&case)?,
-                    options: case.solver_with_cells(a.cells)?,
+                    history,
+                    options,
                     settings,
                     parameter: Some(parameter),
                 };
@@ -225,9 +223,10 @@ impl PlotConfig {
             }
             PlotCommand::SurfaceProfiles(a) => {
                 let case = load(&a.figure)?;
+                let (history, options) = marching(&case, cyclic(&case)?, a.cells, &a.figure)?;
                 let figure = FigureConfig::Fatigue {
-                    history: cyclic(&case)?,
-                    options: case.solver_with_cells(a.cells)?,
+                    history,
+                    options,
                     settings: case.fatigue()?,
                     parameter: None,
                 };
@@ -245,6 +244,19 @@ impl PlotConfig {
 
 fn load(args: &FigureArgs) -> Result<Case> {
     crate::case::load(&args.case)
+}
+
+/// The solver settings of a figure that marches `history`, refused when the march is estimated
+/// above the size limit (`crate::limits`) unless `--no-size-limit`.
+fn marching(
+    case: &Case,
+    history: History,
+    cells: Option<usize>,
+    figure: &FigureArgs,
+) -> Result<(History, MarchOptions)> {
+    let options = case.solver_with_cells(cells)?;
+    crate::limits::check_case_march(&history, &options, cells, figure.no_size_limit)?;
+    Ok((history, options))
 }
 
 /// The history of `[history]`, which the fatigue figures need to have cycles.
