@@ -173,11 +173,16 @@ pub fn check_case_march(
     if no_size_limit {
         return Ok(());
     }
-    let field = match cells {
+    check_march(history.loads().len(), options, &cells_field(cells, options))
+}
+
+/// Where the command line's cell count came from, as the user wrote it: `--cells N` when given,
+/// else the case's `solver.cells = N`.
+pub fn cells_field(cells: Option<usize>, options: &MarchOptions) -> String {
+    match cells {
         Some(n) => format!("--cells {n}"),
         None => format!("solver.cells = {}", options.cells()),
-    };
-    check_march(history.loads().len(), options, &field)
+    }
 }
 
 /// Refuses recorded fields (four f64 per cell and increment) above [`MEMORY_LIMIT_BYTES`].

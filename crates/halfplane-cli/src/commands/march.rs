@@ -42,10 +42,7 @@ impl MarchConfig {
         let (history, until) = case.march_history()?;
         let options = case.solver_with_cells(args.cells)?;
         if !args.no_size_limit {
-            let field = match args.cells {
-                Some(n) => format!("--cells {n}"),
-                None => format!("solver.cells = {}", options.cells()),
-            };
+            let field = limits::cells_field(args.cells, &options);
             let increments = limits::planned_increments(&history, until.as_ref());
             limits::check_march(increments, &options, &field)?;
             if args.fields.is_some() {

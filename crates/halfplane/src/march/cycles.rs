@@ -26,11 +26,15 @@ pub fn march(
     options: &MarchOptions,
     mut observer: impl FnMut(&StepReport, &Fields),
 ) -> Result<MarchResult> {
-    let outcome = march_until(contact, history, options, |report, fields| {
+    uninterrupted(march_until(contact, history, options, |report, fields| {
         observer(report, fields);
         ControlFlow::<Infallible>::Continue(())
-    })?;
-    match outcome {
+    }))
+}
+
+/// The result of a march whose observer never stops it.
+fn uninterrupted(outcome: Result<ControlFlow<Infallible, MarchResult>>) -> Result<MarchResult> {
+    match outcome? {
         ControlFlow::Continue(result) => Ok(result),
         ControlFlow::Break(never) => match never {},
     }
@@ -70,14 +74,16 @@ pub fn march_steady(
     options: &MarchOptions,
     mut observer: impl FnMut(&StepReport, &Fields),
 ) -> Result<MarchResult> {
-    let outcome = march_steady_until(contact, history, steady, options, |report, fields| {
-        observer(report, fields);
-        ControlFlow::<Infallible>::Continue(())
-    })?;
-    match outcome {
-        ControlFlow::Continue(result) => Ok(result),
-        ControlFlow::Break(never) => match never {},
-    }
+    uninterrupted(march_steady_until(
+        contact,
+        history,
+        steady,
+        options,
+        |report, fields| {
+            observer(report, fields);
+            ControlFlow::<Infallible>::Continue(())
+        },
+    ))
 }
 
 /// [`march_steady`] with an observer that may stop the march, as in [`march_until`].
