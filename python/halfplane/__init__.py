@@ -6,6 +6,8 @@ The same analyses as the ``halfplane`` command, with the same numbers:
 - :func:`read_case`, :meth:`Case.from_toml` and the keyword constructor :class:`Case` build cases;
 - :func:`steady` (``halfplane steady --json`` as a :class:`SteadyResult`), :func:`evolve`
   (``evolve --csv`` as a DataFrame), :func:`march` (``march``: steps, cycles, fields);
+  results are typed, read-only records built from the command's report structs (no text in
+  between), with a ``repr`` for the terminal and an HTML table for notebooks;
 - :func:`stress` (``stress``: the stresses below the contact at an increment) and :func:`fatigue`
   (``fatigue``: initiation parameters over the steady cycle); :func:`match` (``match``: the
   test that reproduces a prototype's contact-edge state);
@@ -22,8 +24,6 @@ names the field.
 
 from __future__ import annotations
 
-import io
-import json
 import numbers
 import warnings
 from typing import Any, Optional
@@ -33,8 +33,25 @@ import pandas as pd
 from . import _halfplane
 from ._batch import STEADY_COLUMNS, steady_batch
 from ._halfplane import Case, read_case
-from ._matching import MatchResult, match
-from ._results import MarchResult, Record, SteadyResult
+from ._matching import MatchResult, MatchSide, Mismatch, match
+from ._results import (
+    Asymptotic,
+    AsymptoticStickZone,
+    ContactState,
+    Criteria,
+    EdgeIntensities,
+    Edges,
+    Estimate,
+    LoadPoint,
+    MarchResult,
+    PerPoint,
+    Profile,
+    Record,
+    SteadyResult,
+    StickZone,
+    Units,
+    _frame,
+)
 from ._subsurface import FatigueResult, StressResult, fatigue, stress
 from .errors import (
     HalfplaneError,
@@ -66,21 +83,10 @@ def steady(case: Case) -> SteadyResult:
     outside the smaller contact): :func:`march` covers those. A missing asymptotic estimate is a
     :class:`HalfplaneWarning`, as the command's note on stderr.
     """
-    text, note = _halfplane.steady_json(case)
+    report, note = _halfplane.steady_report(case)
     if note is not None:
         warnings.warn(note, HalfplaneWarning, stacklevel=2)
-    return SteadyResult(json.loads(text))
-
-
-#: pandas before 3 parses CSV numbers to within an ulp unless asked for round-trip precision.
-_OLD_PANDAS = int(pd.__version__.split(".")[0]) < 3
-
-
-def _read_csv(text: str) -> pd.DataFrame:
-    # Every number is parsed exactly as the command wrote it (shortest round-trip form).
-    if _OLD_PANDAS:
-        return pd.read_csv(io.StringIO(text), float_precision="round_trip")
-    return pd.read_csv(io.StringIO(text))
+    return SteadyResult._from(report)
 
 
 def evolve(case: Case, points: int = 21) -> pd.DataFrame:
@@ -93,10 +99,10 @@ def evolve(case: Case, points: int = 21) -> pd.DataFrame:
     ``one-edge-slip``). ``DataFrame.attrs["regime"]`` holds the steady regime; the command's
     warnings are :class:`HalfplaneWarning`.
     """
-    csv, regime, notes = _halfplane.evolve_csv(case, _count("points", points))
+    columns, regime, notes = _halfplane.evolve_report(case, _count("points", points))
     for note in notes:
         warnings.warn(note, HalfplaneWarning, stacklevel=2)
-    frame = _read_csv(csv)
+    frame = _frame(columns)
     frame.attrs["regime"] = regime
     return frame
 
@@ -133,14 +139,14 @@ def march(
     if cells is not None:
         cells = _count("cells", cells)
     out = _halfplane.march_report(case, cells, bool(fields), bool(no_size_limit))
-    cycles = pd.DataFrame(
-        out["cycles"], columns=["index", "energy", "max_slip_amplitude"]
-    ).astype({"index": "int64", "energy": "float64", "max_slip_amplitude": "float64"})
+    cycles = _frame(out["cycles"]).astype(
+        {"index": "int64", "energy": "float64", "max_slip_amplitude": "float64"}
+    )
     recorded = (
         {k: out[k] for k in ("pressure", "traction", "slip", "slip_increment")} if fields else None
     )
     return MarchResult(
-        steps=_read_csv(out["steps_csv"]),
+        steps=_frame(out["steps"]),
         cycles=cycles,
         shakedown_cycle=out["shakedown_cycle"],
         x=out["x"],
@@ -152,20 +158,34 @@ def march(
 
 
 __all__ = [
+    "Asymptotic",
+    "AsymptoticStickZone",
     "Case",
+    "ContactState",
+    "Criteria",
+    "EdgeIntensities",
+    "Edges",
+    "Estimate",
     "FatigueResult",
     "HalfplaneError",
     "HalfplaneWarning",
     "InputError",
+    "LoadPoint",
     "MarchResult",
     "MatchResult",
+    "MatchSide",
+    "Mismatch",
     "OutsideAnalysisError",
+    "PerPoint",
+    "Profile",
     "Record",
     "STEADY_COLUMNS",
     "STEADY_INPUT_COLUMNS",
     "SolverError",
     "SteadyResult",
+    "StickZone",
     "StressResult",
+    "Units",
     "evolve",
     "fatigue",
     "march",

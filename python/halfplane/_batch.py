@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import importlib
-from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+from typing import Any, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
 import pandas as pd
@@ -37,10 +37,8 @@ def _get(table: Table, name: str) -> Any:
 
 
 def _one_dimensional(name: str, values: Any) -> np.ndarray:
-    if isinstance(values, (pd.Series, pd.Index)):
-        array = values.to_numpy()
-    else:
-        array = np.asarray(values)
+    is_pandas = isinstance(values, (pd.Series, pd.Index))
+    array = values.to_numpy() if is_pandas else np.asarray(values)
     if array.ndim != 1:
         raise _bad(f"column {name!r} must be one-dimensional, found shape {array.shape}")
     return array
@@ -63,7 +61,7 @@ def _numbers(name: str, values: Any) -> np.ndarray:
     if isinstance(values, pd.Series):
         dtype = values.dtype
         if pd.api.types.is_bool_dtype(dtype) or not (
-            pd.api.types.is_numeric_dtype(dtype) or dtype == object
+            pd.api.types.is_numeric_dtype(dtype) or pd.api.types.is_object_dtype(dtype)
         ):
             raise _bad(f"column {name!r} must hold numbers; it has dtype {dtype}")
         if pd.api.types.is_numeric_dtype(dtype):
@@ -173,7 +171,8 @@ def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
         raise TypeError(
             f"table must be a pandas DataFrame or a dict of columns, not {type(table).__name__}"
         )
-    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1):
+    whole = isinstance(threads, (int, np.integer)) and not isinstance(threads, bool)
+    if threads is not None and (not whole or threads < 1):
         raise _bad(f"invalid threads = {threads!r}: must be a whole number from 1 to 4096, or None")
     profile = _get(table, "profile")
     if profile is None:
@@ -204,7 +203,10 @@ def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
         text = np.empty(len(messages), dtype=object)
         text[:] = messages
         error[failed_rows] = text
-    frame = pd.DataFrame(numbers.T, index=index, columns=STEADY_COLUMNS[1:-1], copy=False)
-    frame.insert(0, "regime", pd.Series(_REGIMES[regime_codes], index=index, dtype=object, copy=False))
+    frame: pd.DataFrame = pd.DataFrame(
+        numbers.T, index=index, columns=STEADY_COLUMNS[1:-1], copy=False
+    )
+    regimes = pd.Series(_REGIMES[regime_codes], index=index, dtype=object, copy=False)
+    frame.insert(0, "regime", regimes)
     frame["error"] = pd.Series(error, index=index, dtype=object, copy=False)
     return frame

@@ -16,13 +16,13 @@ __all__ = [
     "THREADS_VARIABLE",
     "__version__",
     "_case_from_state",
-    "evolve_csv",
+    "evolve_report",
     "fatigue_report",
     "march_report",
     "match_report",
     "read_case",
     "steady_batch_columns",
-    "steady_json",
+    "steady_report",
     "stress_points",
 ]
 
@@ -33,7 +33,9 @@ STEADY_INPUT_COLUMNS: List[str]
 THREADS_VARIABLE: str
 __version__: str
 
-_Point = Union[Tuple[float, float], Tuple[float, float, float], Sequence[float], Mapping[str, float]]
+_Point = Union[
+    Tuple[float, float], Tuple[float, float, float], Sequence[float], Mapping[str, float]
+]
 
 @final
 class Case:
@@ -85,8 +87,8 @@ class Case:
 
 def read_case(path: Union[str, PathLike[str]]) -> Case: ...
 def _case_from_state(text: str, files: Mapping[str, str]) -> Case: ...
-def steady_json(case: Case) -> Tuple[str, Optional[str]]: ...
-def evolve_csv(case: Case, points: int) -> Tuple[str, str, List[str]]: ...
+def steady_report(case: Case) -> Tuple[Dict[str, Any], Optional[str]]: ...
+def evolve_report(case: Case, points: int) -> Tuple[Dict[str, Any], str, List[str]]: ...
 def march_report(
     case: Case, cells: Optional[int] = None, fields: bool = False, no_size_limit: bool = False
 ) -> Dict[str, Any]: ...
@@ -105,7 +107,7 @@ def stress_points(
 ) -> Dict[str, Any]: ...
 def fatigue_report(
     case: Case, cells: Optional[int] = None
-) -> Tuple[str, str, List[str]]: ...
+) -> Tuple[Dict[str, Any], List[str]]: ...
 def match_report(
     case: Case,
     profile: str,
@@ -117,4 +119,4 @@ def match_report(
     poisson_ratio: Optional[float] = None,
     friction: Optional[float] = None,
     exact: bool = False,
-) -> Tuple[str, Case, str, List[str]]: ...
+) -> Tuple[Dict[str, Any], Case, str, List[str]]: ...

@@ -2,45 +2,181 @@
 
 from __future__ import annotations
 
-import json
 import warnings
-from typing import Any, Dict, Mapping, Optional
+from dataclasses import dataclass
+from typing import Any, ClassVar, Dict, List, Mapping, Optional, Tuple
 
 from . import _halfplane
 from ._halfplane import Case
-from ._results import Record
+from ._results import (
+    Edges,
+    LoadPoint,
+    PerPoint,
+    Profile,
+    Record,
+    Units,
+    _edges,
+    _float,
+    _html_table,
+    _num,
+    _opt_float,
+    _per_point,
+)
 from .errors import HalfplaneWarning, InputError
 
-class MatchResult(Record):
-    """The report of ``halfplane match --json`` as attributes (``mode``, ``matched``,
-    ``prototype``, ``test``, ``normal_intensity``, ``shear_intensity``, ...; see docs/matching.md
-    for every field, its unit and sign), plus:
 
+@dataclass(frozen=True, eq=False)
+class Mismatch(Record):
+    """A quantity of the ``prototype`` and of the ``test``, and their ``mismatch``
+    (test - prototype)/|prototype| (None when the prototype's value is zero)."""
+
+    prototype: float
+    test: float
+    mismatch: Optional[float]
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Mismatch:
+        return cls(_float(data["prototype"]), _float(data["test"]), _opt_float(data["mismatch"]))
+
+
+@dataclass(frozen=True, eq=False)
+class MatchSide(Record):
+    """One contact of a match (the prototype or the test): its steady ``regime``, ``profile``,
+    ``compliance`` A, ``friction`` f, the loads at its ``points`` (as given) and the contact
+    ``half_width`` a at each."""
+
+    regime: str
+    profile: Profile
+    compliance: float
+    friction: float
+    points: PerPoint[LoadPoint]
+    half_width: PerPoint[float]
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> MatchSide:
+        return cls(
+            regime=str(data["regime"]),
+            profile=Profile._from(data["profile"]),
+            compliance=_float(data["compliance"]),
+            friction=_float(data["friction"]),
+            points=_per_point(data["points"], LoadPoint._from),
+            half_width=_per_point(data["half_width"], _float),
+        )
+
+
+def _by_point(data: Mapping[str, Any]) -> PerPoint[Mismatch]:
+    return _per_point(data, Mismatch._from)
+
+
+def _by_edge_and_point(data: Mapping[str, Any]) -> Edges[PerPoint[Mismatch]]:
+    return _edges(data, _by_point)
+
+
+@dataclass(frozen=True, eq=False)
+class MatchResult(Record):
+    """The report of ``halfplane match --json`` as typed attributes (see docs/matching.md for
+    every field, its unit and sign):
+
+    - ``mode`` (``"asymptotic"`` or ``"exact"``) and ``matched`` (the matched quantities in
+      words);
+    - ``prototype``, ``test``: each contact (:class:`MatchSide`: regime, profile, loads,
+      half-widths);
+    - ``normal_intensity`` (K_N at each point), ``shear_intensity`` and ``equivalent_shear``
+      (K_T and S at each edge and point), ``mean_shear_intensity`` (at each edge),
+      ``edge_motion`` (a2 - a1) and ``slip_zones`` (each edge and point): each a
+      :class:`Mismatch` of prototype and test, e.g. ``normal_intensity.at_point2.mismatch``;
+    - ``warnings`` (the command's notes) and ``units``;
     - ``test_case``: the matched test as a :class:`Case`, the case ``match -o`` writes;
     - ``test_case_text``: that file's TOML text (``Case.from_toml`` reads it back).
 
     ``prototype_file`` and ``test_file`` are None: the package reads and writes no files.
-    ``to_dict()`` is the JSON object with those two fields None.
+    ``to_dict()`` is the JSON object with those two fields None (without the test case).
     """
 
-    def __init__(self, data: Mapping[str, Any], test_case: Case, text: str) -> None:
-        super().__init__(data)
-        object.__setattr__(self, "_test_case", test_case)
-        object.__setattr__(self, "_text", text)
+    _EXTRA: ClassVar[Tuple[str, ...]] = ("test_case", "test_case_text")
 
-    @property
-    def test_case(self) -> Case:
-        """The matched test case (material, friction, profile, cycle; the prototype's history,
-        solver and units carried over)."""
-        return self.__dict__["_test_case"]
+    mode: str
+    matched: str
+    prototype_file: Optional[str]
+    test_file: Optional[str]
+    prototype: MatchSide
+    test: MatchSide
+    normal_intensity: PerPoint[Mismatch]
+    shear_intensity: Edges[PerPoint[Mismatch]]
+    mean_shear_intensity: Edges[Mismatch]
+    equivalent_shear: Edges[PerPoint[Mismatch]]
+    edge_motion: Mismatch
+    slip_zones: Edges[PerPoint[Mismatch]]
+    warnings: Tuple[str, ...]
+    units: Units
+    test_case: Case
+    test_case_text: str
 
-    @property
-    def test_case_text(self) -> str:
-        """The test case as the TOML text ``halfplane match -o`` writes."""
-        return self.__dict__["_text"]
+    @classmethod
+    def _from(cls, data: Mapping[str, Any], test_case: Case, text: str) -> MatchResult:
+        return cls(
+            mode=str(data["mode"]),
+            matched=str(data["matched"]),
+            prototype_file=None,
+            test_file=None,
+            prototype=MatchSide._from(data["prototype"]),
+            test=MatchSide._from(data["test"]),
+            normal_intensity=_by_point(data["normal_intensity"]),
+            shear_intensity=_by_edge_and_point(data["shear_intensity"]),
+            mean_shear_intensity=_edges(data["mean_shear_intensity"], Mismatch._from),
+            equivalent_shear=_by_edge_and_point(data["equivalent_shear"]),
+            edge_motion=Mismatch._from(data["edge_motion"]),
+            slip_zones=_by_edge_and_point(data["slip_zones"]),
+            warnings=tuple(str(w) for w in data["warnings"]),
+            units=Units._from(data["units"]),
+            test_case=test_case,
+            test_case_text=text,
+        )
 
-    def __reduce__(self) -> Any:
-        return (type(self), (self._data, self.test_case, self.test_case_text))
+    def __repr__(self) -> str:
+        k = self.normal_intensity
+        return (
+            f"MatchResult(mode={self.mode!r}, prototype={self.prototype.profile.kind!r} "
+            f"({self.prototype.regime}), test={self.test.profile.kind!r} ({self.test.regime}), "
+            f"K_N mismatch=({_percent(k.at_point1.mismatch)}, {_percent(k.at_point2.mismatch)}))"
+        )
+
+    def _repr_html_(self) -> str:
+        u = self.units
+        force = f"{u.force}/{u.length}"
+        p, t = self.prototype, self.test
+        rows: List[List[str]] = [
+            ["profile", p.profile.kind, t.profile.kind, ""],
+            ["regime", p.regime, t.regime, ""],
+        ]
+        for name, get in (("point1", "at_point1"), ("point2", "at_point2")):
+            a, b = getattr(p.points, get), getattr(t.points, get)
+            rows.append([f"{name} P, Q [{force}]", f"{_num(a.normal)}, {_num(a.shear)}",
+                         f"{_num(b.normal)}, {_num(b.shear)}", ""])
+            rows.append([f"{name} σ [{u.stress}]", _num(a.bulk), _num(b.bulk), ""])
+        compared = [
+            ("K_N at point1", self.normal_intensity.at_point1),
+            ("K_N at point2", self.normal_intensity.at_point2),
+            ("K_T left at point1", self.shear_intensity.left.at_point1),
+            ("K_T left at point2", self.shear_intensity.left.at_point2),
+            ("K_T right at point1", self.shear_intensity.right.at_point1),
+            ("K_T right at point2", self.shear_intensity.right.at_point2),
+            ("edge motion a2 - a1", self.edge_motion),
+            ("slip zone left at point2", self.slip_zones.left.at_point2),
+            ("slip zone right at point2", self.slip_zones.right.at_point2),
+        ]
+        for label, m in compared:
+            rows.append([label, _num(m.prototype), _num(m.test), _percent(m.mismatch)])
+        return _html_table(
+            f"MatchResult ({self.mode}: {self.matched})",
+            rows,
+            header=("", "prototype", "test", "mismatch"),
+        )
+
+
+def _percent(value: Optional[float]) -> str:
+    return "-" if value is None else f"{100.0 * value:+.3f}%"
+
 
 _PROFILES = ("hertz", "flat-rounded", "power-law")
 
@@ -90,13 +226,10 @@ def match(
                 numbers[name] = float(value)
             except (TypeError, ValueError):
                 raise InputError(f"invalid {name} = {value!r}: must be a number") from None
-    text, test_case, toml, notes = _halfplane.match_report(
+    report, test_case, toml, notes = _halfplane.match_report(
         prototype_case, profile, exact=bool(exact), **numbers
     )
     for note in notes:
         warnings.warn(note, HalfplaneWarning, stacklevel=2)
-    data = json.loads(text)
-    data["prototype_file"] = None
-    data["test_file"] = None
-    return MatchResult(data, test_case, toml)
+    return MatchResult._from(report, test_case, toml)
 

@@ -1,126 +1,521 @@
-"""Result objects: :class:`SteadyResult` (the JSON of ``halfplane steady --json`` as attributes)
-and :class:`MarchResult` (the tables and fields of ``halfplane march``)."""
+"""Typed result records: :class:`Record` (the base of every report record), the records of
+``halfplane steady`` (:class:`SteadyResult` and its parts) and :class:`MarchResult`.
+
+The native module converts the command's report structs to Python objects directly (no JSON or
+CSV text in between); the records here give them typed attributes named as the command's JSON
+keys, nested as in the JSON, and ``to_dict()`` gives that JSON object back.
+"""
 
 from __future__ import annotations
 
-import copy
-from typing import Any, Dict, Iterator, List, Mapping, Optional, Tuple
+import dataclasses
+import math
+from dataclasses import dataclass
+from html import escape
+from typing import (
+    TYPE_CHECKING,
+    Any,
+    Callable,
+    ClassVar,
+    Dict,
+    Generic,
+    Iterator,
+    List,
+    Mapping,
+    Optional,
+    Sequence,
+    Tuple,
+    TypeVar,
+)
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
+T = TypeVar("T")
+U = TypeVar("U")
 
-def _wrap(value: Any) -> Any:
-    if isinstance(value, dict):
-        return Record(value)
-    if isinstance(value, list):
-        return [_wrap(v) for v in value]
+#: An array of float64 values.
+FloatArray = npt.NDArray[np.float64]
+
+
+def _plain(value: Any) -> Any:
+    """``value`` as the command's JSON holds it: records as dicts, tuples as lists, a number that
+    is not finite as None (JSON has no NaN or infinity; the command writes null)."""
+    if isinstance(value, Record):
+        return value.to_dict()
+    if isinstance(value, (tuple, list)):
+        return [_plain(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
     return value
 
 
+@dataclass(frozen=True, eq=False)
 class Record:
-    """A read-only view of a JSON object: its keys are attributes (nested objects are Records,
-    ``null`` is None). ``to_dict()`` returns the object itself, as plain dicts and lists."""
+    """The base of the typed, read-only result records. A record's fields are the keys of the
+    command's JSON object, as attributes with types (``result.stick_zone.left``); nested objects
+    are records. ``record["key"]`` and iteration over the keys work as for a dict, ``to_dict()``
+    returns the JSON object (plain dicts, lists, numbers, strings and None), and two records are
+    equal when their ``to_dict()`` are. Records pickle and are immutable."""
 
-    def __init__(self, data: Mapping[str, Any]) -> None:
-        object.__setattr__(self, "_data", dict(data))
+    #: Fields that the JSON leaves out when they are None.
+    _OMIT_NONE: ClassVar[Tuple[str, ...]] = ()
+    #: Fields that are not part of the JSON object (``to_dict()`` and iteration skip them).
+    _EXTRA: ClassVar[Tuple[str, ...]] = ()
 
-    def __getattr__(self, name: str) -> Any:
-        data = self.__dict__.get("_data", {})
-        if name in data:
-            return _wrap(data[name])
-        raise AttributeError(f"{type(self).__name__} has no field {name!r} (fields: {', '.join(data)})")
-
-    def __setattr__(self, name: str, value: Any) -> None:
-        raise AttributeError(f"{type(self).__name__} is read-only")
+    def _keys(self) -> List[str]:
+        return [
+            f.name
+            for f in dataclasses.fields(self)
+            if f.name not in self._EXTRA
+            and not (f.name in self._OMIT_NONE and getattr(self, f.name) is None)
+        ]
 
     def __getitem__(self, key: str) -> Any:
-        return _wrap(self._data[key])
+        if key not in self._keys():
+            raise KeyError(key)
+        return getattr(self, key)
 
     def __iter__(self) -> Iterator[str]:
-        return iter(self._data)
+        return iter(self._keys())
 
-    def __dir__(self) -> List[str]:
-        return sorted(set(self._data) | {"to_dict"})
+    def keys(self) -> List[str]:
+        """The JSON object's keys, in order."""
+        return self._keys()
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The JSON object: the fields as plain dicts, lists, numbers, strings and None (a new
+        copy; a number that is not finite is None, as the command writes it)."""
+        return {k: _plain(getattr(self, k)) for k in self._keys()}
 
     def __eq__(self, other: object) -> bool:
-        return type(other) is type(self) and other.to_dict() == self.to_dict()  # type: ignore[attr-defined]
+        if type(other) is not type(self):
+            return NotImplemented
+        assert isinstance(other, Record)
+        return self.to_dict() == other.to_dict()
 
     __hash__ = None  # type: ignore[assignment]
 
-    def __reduce__(self) -> Tuple[Any, Tuple[Dict[str, Any]]]:
-        return (type(self), (self._data,))
-
-    def to_dict(self) -> Dict[str, Any]:
-        """The fields as plain dicts, lists, numbers, strings and None (a deep copy)."""
-        return copy.deepcopy(self._data)
-
-    def __repr__(self) -> str:
-        inner = ", ".join(f"{k}={_short(v)}" for k, v in self._data.items())
-        return f"{type(self).__name__}({inner})"
-
-
-def _short(value: Any) -> str:
-    if isinstance(value, float):
-        return f"{value:.6g}"
-    if isinstance(value, dict):
-        return "{" + ", ".join(f"{k}: {_short(v)}" for k, v in value.items()) + "}"
-    if isinstance(value, list):
-        return "[" + ", ".join(_short(v) for v in value) + "]"
-    return repr(value)
+    if not TYPE_CHECKING:
+        # Only for a name that is not a field (normal lookup failed): say which fields there are.
+        # Hidden from type checkers, which would otherwise accept any attribute.
+        def __getattr__(self, name):
+            if name.startswith("__"):
+                raise AttributeError(name)
+            fields = ", ".join(f.name for f in dataclasses.fields(self))
+            raise AttributeError(
+                f"{type(self).__name__} has no field {name!r} (fields: {fields})"
+            )
 
 
+def _float(value: Any) -> float:
+    return float(value)
+
+
+def _opt_float(value: Any) -> Optional[float]:
+    return None if value is None else float(value)
+
+
+@dataclass(frozen=True, eq=False)
+class PerPoint(Record, Generic[T]):
+    """A quantity at the cycle's two ends, as given: ``at_point1``, ``at_point2``."""
+
+    at_point1: T
+    at_point2: T
+
+
+@dataclass(frozen=True, eq=False)
+class Edges(Record, Generic[T]):
+    """A quantity at the contact's two edges: ``left`` (x < 0) and ``right``."""
+
+    left: T
+    right: T
+
+
+def _per_point(data: Mapping[str, Any], item: Callable[[Any], U]) -> PerPoint[U]:
+    return PerPoint(item(data["at_point1"]), item(data["at_point2"]))
+
+
+def _edges(data: Mapping[str, Any], item: Callable[[Any], U]) -> Edges[U]:
+    return Edges(item(data["left"]), item(data["right"]))
+
+
+@dataclass(frozen=True, eq=False)
+class Units(Record):
+    """The case's unit names: ``force`` (N), ``length`` (mm), ``stress`` (MPa) by default."""
+
+    force: str
+    length: str
+    stress: str
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Units:
+        return cls(str(data["force"]), str(data["length"]), str(data["stress"]))
+
+
+@dataclass(frozen=True, eq=False)
+class Profile(Record):
+    """The indenter's profile: ``kind`` (``"hertz"``, ``"flat-rounded"``, ``"power-law"`` or
+    ``"tabulated"``), its parameters (``radius`` R, or the edge radius of a flat-rounded punch;
+    ``flat_half_width`` b; ``coefficient`` B and ``exponent`` k of g = B|x|^k; ``rows`` of a
+    table), None where the kind has none (and then absent from ``to_dict()``), and ``kinks``
+    (the |x| of slope discontinuities)."""
+
+    _OMIT_NONE: ClassVar[Tuple[str, ...]] = (
+        "radius",
+        "flat_half_width",
+        "coefficient",
+        "exponent",
+        "rows",
+    )
+
+    kind: str
+    radius: Optional[float]
+    flat_half_width: Optional[float]
+    coefficient: Optional[float]
+    exponent: Optional[float]
+    rows: Optional[int]
+    kinks: Tuple[float, ...]
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Profile:
+        rows = data.get("rows")
+        return cls(
+            kind=str(data["kind"]),
+            radius=_opt_float(data.get("radius")),
+            flat_half_width=_opt_float(data.get("flat_half_width")),
+            coefficient=_opt_float(data.get("coefficient")),
+            exponent=_opt_float(data.get("exponent")),
+            rows=None if rows is None else int(rows),
+            kinks=tuple(float(k) for k in data["kinks"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class LoadPoint(Record):
+    """A load: ``normal`` P (> 0 compresses), ``shear`` Q and ``bulk`` tension sigma."""
+
+    normal: float
+    shear: float
+    bulk: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> LoadPoint:
+        return cls(_float(data["normal"]), _float(data["shear"]), _float(data["bulk"]))
+
+
+@dataclass(frozen=True, eq=False)
+class Criteria(Record):
+    """The regime's criteria: ``shear_ratio_1``, ``_2`` (|Q|/P at the analysis's points 1 and 2),
+    ``full_stick_ratio`` ((|dQ| + pi a_max |dsigma|/4)/|dP|, eq. (1); None when dP = 0),
+    ``shear_range`` dQ, ``bulk_term`` (pi a_max |dsigma|/4) and ``friction`` f."""
+
+    shear_ratio_1: float
+    shear_ratio_2: float
+    full_stick_ratio: Optional[float]
+    shear_range: float
+    bulk_term: float
+    friction: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Criteria:
+        return cls(
+            _float(data["shear_ratio_1"]),
+            _float(data["shear_ratio_2"]),
+            _opt_float(data["full_stick_ratio"]),
+            _float(data["shear_range"]),
+            _float(data["bulk_term"]),
+            _float(data["friction"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class ContactState(Record):
+    """The contact at the analysis's points 1 and 2: ``half_width_1``, ``_2`` (a) and
+    ``normal_intensity_1``, ``_2`` (K_N)."""
+
+    half_width_1: float
+    half_width_2: float
+    normal_intensity_1: float
+    normal_intensity_2: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> ContactState:
+        return cls(
+            _float(data["half_width_1"]),
+            _float(data["half_width_2"]),
+            _float(data["normal_intensity_1"]),
+            _float(data["normal_intensity_2"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class StickZone(Record):
+    """The permanent stick zone [-m, n]: ``left`` = -m, ``right`` = n, ``half_width``
+    d = (m + n)/2 and ``eccentricity`` e = (n - m)/2 (x positive in the direction of positive
+    Q)."""
+
+    left: float
+    right: float
+    half_width: float
+    eccentricity: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> StickZone:
+        return cls(
+            _float(data["left"]),
+            _float(data["right"]),
+            _float(data["half_width"]),
+            _float(data["eccentricity"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class AsymptoticStickZone(Record):
+    """The asymptotic estimate of the stick zone, ``left`` and ``right``, and each one's
+    relative difference from the exact one."""
+
+    left: float
+    right: float
+    relative_difference_left: float
+    relative_difference_right: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> AsymptoticStickZone:
+        return cls(
+            _float(data["left"]),
+            _float(data["right"]),
+            _float(data["relative_difference_left"]),
+            _float(data["relative_difference_right"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class EdgeIntensities(Record):
+    """The edge description at one point: ``shear_intensity_left``, ``_right`` (K_T) and
+    ``equivalent_shear_left``, ``_right`` (S)."""
+
+    shear_intensity_left: float
+    shear_intensity_right: float
+    equivalent_shear_left: float
+    equivalent_shear_right: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> EdgeIntensities:
+        return cls(
+            _float(data["shear_intensity_left"]),
+            _float(data["shear_intensity_right"]),
+            _float(data["equivalent_shear_left"]),
+            _float(data["equivalent_shear_right"]),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class Estimate(Record):
+    """An asymptotic ``estimate`` against the ``exact`` value, and their
+    ``relative_difference`` (estimate - exact)/exact."""
+
+    estimate: float
+    exact: float
+    relative_difference: float
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Estimate:
+        return cls(
+            _float(data["estimate"]), _float(data["exact"]), _float(data["relative_difference"])
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class Asymptotic(Record):
+    """The asymptotic (edge) description in partial slip: ``stick_zone`` (estimate),
+    ``stick_load`` (P_K at each edge), ``edges`` (K_T and S at each point) and ``slip_zones``
+    (estimate against exact, at each edge and point)."""
+
+    stick_zone: AsymptoticStickZone
+    stick_load: Edges[float]
+    edges: PerPoint[EdgeIntensities]
+    slip_zones: Edges[PerPoint[Estimate]]
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> Asymptotic:
+        return cls(
+            AsymptoticStickZone._from(data["stick_zone"]),
+            _edges(data["stick_load"], _float),
+            _per_point(data["edges"], EdgeIntensities._from),
+            _edges(data["slip_zones"], lambda e: _per_point(e, Estimate._from)),
+        )
+
+
+def _num(value: Optional[float]) -> str:
+    """A number for a table: six significant digits, "-" for None."""
+    if value is None:
+        return "-"
+    return f"{value:.6g}"
+
+
+def _text(value: object) -> str:
+    """A value for a table: its ``str``, "-" for None."""
+    return "-" if value is None else str(value)
+
+
+def _html_table(caption: str, rows: Sequence[Sequence[str]], header: Sequence[str] = ()) -> str:
+    """A compact HTML table: the caption, an optional header row, then one row per entry whose
+    first cell is its label; a row shorter than the header spans its last cell to the end."""
+    width = max([len(header)] + [len(r) for r in rows])
+    out = [
+        '<table class="halfplane-result">',
+        f'<caption style="text-align: left">{escape(caption)}</caption>',
+    ]
+    if header:
+        out.append("<tr>" + "".join(f"<th>{escape(h)}</th>" for h in header) + "</tr>")
+    for row in rows:
+        cells = [f'<th style="text-align: left">{escape(row[0])}</th>']
+        for i, cell in enumerate(row[1:], start=1):
+            span = width - i if i == len(row) - 1 and len(row) < width else 1
+            attribute = f' colspan="{span}"' if span > 1 else ""
+            cells.append(f"<td{attribute}>{escape(cell)}</td>")
+        out.append("<tr>" + "".join(cells) + "</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+@dataclass(frozen=True, eq=False)
 class SteadyResult(Record):
-    """The steady state of a case's cycle: every field of ``halfplane steady --json`` as an
+    """The steady state of a case's cycle: every field of ``halfplane steady --json`` as a typed
     attribute, nested as in the JSON (``result.stick_zone.left``,
     ``result.slip_zones.right.at_point2``, ``result.criteria.shear_ratio_1``, ...).
 
     Main fields (lengths in the case's length unit, mm by default; loads N/mm; stresses MPa):
 
     - ``regime``: ``"partial-slip"``, ``"full-stick"`` or ``"gross-sliding"``;
-    - ``contact.half_width_1``, ``_2``: contact half-width a at point1, point2 as given;
+    - ``profile`` (:class:`Profile`), ``compliance`` A, ``friction`` f;
+    - ``points``: the loads at ``at_point1`` and ``at_point2`` as given (:class:`LoadPoint`);
+    - ``contact.half_width_1``, ``_2``: contact half-width a at the analysis's points 1 and 2
+      (:class:`ContactState`);
     - ``stick_zone.left``, ``.right``: the permanent stick zone [-m, n] (x positive in the
       direction of positive Q); ``.half_width`` d = (m + n)/2, ``.eccentricity`` e = (n - m)/2;
-      None in gross sliding;
+      None in gross sliding (:class:`StickZone`);
     - ``slip_zones.left.at_point1`` ... ``.right.at_point2``: slip-zone lengths a_i - m (left),
-      a_i - n (right); 0 in full stick;
-    - ``criteria``: |Q|/P at each point, eq. (1)'s full-stick ratio, the bulk-tension term;
-    - ``asymptotic``: the edge description (K_T, S, P_K and slip-zone estimates) in partial slip;
-    - ``smaller_shear_point``: which point is the analysis's point 1 (the end of smaller Q).
+      a_i - n (right); 0 in full stick; None in gross sliding;
+    - ``criteria``: |Q|/P at each point, eq. (1)'s full-stick ratio, the bulk-tension term
+      (:class:`Criteria`);
+    - ``asymptotic``: the edge description (K_T, S, P_K and slip-zone estimates) in partial slip,
+      else None (:class:`Asymptotic`);
+    - ``smaller_shear_point``: which point is the analysis's point 1 (the end of smaller Q);
+    - ``units``: the unit names (:class:`Units`).
 
     Sign conventions: P > 0 compresses; Q and the bulk tension sigma are positive as in the paper's
-    Figure 1; tension adds to the shear at the left edge. ``to_dict()`` equals the parsed JSON.
+    Figure 1; tension adds to the shear at the left edge. ``to_dict()`` equals the command's JSON.
     """
 
+    regime: str
+    profile: Profile
+    compliance: float
+    friction: float
+    points: PerPoint[LoadPoint]
+    smaller_shear_point: str
+    criteria: Criteria
+    contact: ContactState
+    stick_zone: Optional[StickZone]
+    slip_zones: Optional[Edges[PerPoint[float]]]
+    asymptotic: Optional[Asymptotic]
+    units: Units
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> SteadyResult:
+        zone = data["stick_zone"]
+        slip = data["slip_zones"]
+        asymptotic = data["asymptotic"]
+        return cls(
+            regime=str(data["regime"]),
+            profile=Profile._from(data["profile"]),
+            compliance=_float(data["compliance"]),
+            friction=_float(data["friction"]),
+            points=_per_point(data["points"], LoadPoint._from),
+            smaller_shear_point=str(data["smaller_shear_point"]),
+            criteria=Criteria._from(data["criteria"]),
+            contact=ContactState._from(data["contact"]),
+            stick_zone=None if zone is None else StickZone._from(zone),
+            slip_zones=None if slip is None else _edges(slip, lambda e: _per_point(e, _float)),
+            asymptotic=None if asymptotic is None else Asymptotic._from(asymptotic),
+            units=Units._from(data["units"]),
+        )
+
     def __repr__(self) -> str:
-        d = self._data
-        zone = d.get("stick_zone")
-        parts = [f"regime={d['regime']!r}"]
-        c = d["contact"]
-        parts.append(f"half_widths=({c['half_width_1']:.6g}, {c['half_width_2']:.6g})")
-        if zone is not None:
-            parts.append(f"stick_zone=[{zone['left']:.6g}, {zone['right']:.6g}]")
-        slip = d.get("slip_zones")
-        if slip is not None:
+        c = self.contact
+        parts = [
+            f"regime={self.regime!r}",
+            f"half_widths=({c.half_width_1:.6g}, {c.half_width_2:.6g})",
+        ]
+        if self.stick_zone is not None:
+            z = self.stick_zone
+            parts.append(f"stick_zone=[{z.left:.6g}, {z.right:.6g}]")
+        if self.slip_zones is not None:
+            s = self.slip_zones
             parts.append(
-                "slip_zones={left: (%.6g, %.6g), right: (%.6g, %.6g)}"
-                % (
-                    slip["left"]["at_point1"],
-                    slip["left"]["at_point2"],
-                    slip["right"]["at_point1"],
-                    slip["right"]["at_point2"],
-                )
+                f"slip_zones={{left: ({s.left.at_point1:.6g}, {s.left.at_point2:.6g}), "
+                f"right: ({s.right.at_point1:.6g}, {s.right.at_point2:.6g})}}"
             )
         return f"SteadyResult({', '.join(parts)})"
 
+    def _repr_html_(self) -> str:
+        u = self.units
+        force = f"{u.force}/{u.length}"
+        p1, p2 = self.points.at_point1, self.points.at_point2
+        # The contact's half-widths are the analysis's points 1 and 2 (point 1 the end of smaller
+        # Q); the table's columns are the points as given.
+        first, second = self.contact.half_width_1, self.contact.half_width_2
+        if self.smaller_shear_point == "point2":
+            first, second = second, first
+        rows: List[List[str]] = [
+            ["regime", self.regime],
+            [f"normal P [{force}]", _num(p1.normal), _num(p2.normal)],
+            [f"shear Q [{force}]", _num(p1.shear), _num(p2.shear)],
+            [f"bulk σ [{u.stress}]", _num(p1.bulk), _num(p2.bulk)],
+            [f"contact half-width a [{u.length}]", _num(first), _num(second)],
+        ]
+        if self.slip_zones is not None:
+            s = self.slip_zones
+            rows.append(
+                [f"slip zone left [{u.length}]", _num(s.left.at_point1), _num(s.left.at_point2)]
+            )
+            rows.append(
+                [f"slip zone right [{u.length}]", _num(s.right.at_point1), _num(s.right.at_point2)]
+            )
+        zone = self.stick_zone
+        rows.append(
+            [
+                f"stick zone [-m, n] [{u.length}]",
+                "none (gross sliding)"
+                if zone is None
+                else f"[{_num(zone.left)}, {_num(zone.right)}]",
+            ]
+        )
+        c = self.criteria
+        rows.append(
+            [
+                "criteria |Q|/P (analysis points 1, 2)",
+                _num(c.shear_ratio_1),
+                _num(c.shear_ratio_2),
+            ]
+        )
+        rows.append(["full-stick ratio, eq. (1)", _num(c.full_stick_ratio)])
+        rows.append(["friction f", _num(self.friction)])
+        return _html_table(
+            f"SteadyResult ({self.profile.kind})", rows, header=("", "point1", "point2")
+        )
 
+
+@dataclass(frozen=True, eq=False)
 class MarchResult:
     """The marched history of a case (``halfplane march``).
 
     - ``steps``: one row per increment with the ``march --csv`` columns: ``step, normal, shear,
       bulk, half_width, stick_left, stick_right, stick_intervals, energy_increment, energy,
       passes`` (stick columns: the largest stick interval, NaN when none; ``stick_intervals``
-      every interval as ``"left:right"`` separated by spaces);
+      every interval as ``"left:right"`` separated by spaces, NaN when none);
     - ``cycles``: one row per load cycle (cyclic histories): ``index, energy,
       max_slip_amplitude`` (energy per unit thickness, N mm/mm by default; amplitude is half the
       peak-to-peak slip, in the length unit);
@@ -134,7 +529,11 @@ class MarchResult:
     - ``x``: cell centres (length unit), shape (cells,);
     - with ``fields=True``: ``pressure`` p (>= 0), ``traction`` q (positive in the direction of
       positive Q), ``slip`` (accumulated, positive in the sense positive Q drives) and
-      ``slip_increment``, each of shape (increments, cells); otherwise None.
+      ``slip_increment``, each of shape (increments, cells); otherwise None;
+    - ``cells``, ``increments``: the grid's and the history's sizes; ``final_state``: the contact
+      at the last increment in words.
+
+    Read-only (a frozen dataclass); it pickles.
     """
 
     steps: pd.DataFrame
@@ -143,35 +542,39 @@ class MarchResult:
     cycles_run: int
     steady_change: Optional[float]
     steady_converged: Optional[bool]
-    x: np.ndarray
-    pressure: Optional[np.ndarray]
-    traction: Optional[np.ndarray]
-    slip: Optional[np.ndarray]
-    slip_increment: Optional[np.ndarray]
+    x: FloatArray
+    pressure: Optional[FloatArray]
+    traction: Optional[FloatArray]
+    slip: Optional[FloatArray]
+    slip_increment: Optional[FloatArray]
 
     def __init__(
         self,
         steps: pd.DataFrame,
         cycles: pd.DataFrame,
         shakedown_cycle: Optional[int],
-        x: np.ndarray,
-        fields: Optional[Mapping[str, np.ndarray]] = None,
+        x: FloatArray,
+        fields: Optional[Mapping[str, FloatArray]] = None,
         cycles_run: Optional[int] = None,
         steady_change: Optional[float] = None,
         steady_converged: Optional[bool] = None,
     ) -> None:
-        self.steps = steps
-        self.cycles = cycles
-        self.shakedown_cycle = shakedown_cycle
-        self.cycles_run = len(cycles) if cycles_run is None else cycles_run
-        self.steady_change = steady_change
-        self.steady_converged = steady_converged
-        self.x = x
         fields = fields or {}
-        self.pressure = fields.get("pressure")
-        self.traction = fields.get("traction")
-        self.slip = fields.get("slip")
-        self.slip_increment = fields.get("slip_increment")
+        values: Dict[str, Any] = {
+            "steps": steps,
+            "cycles": cycles,
+            "shakedown_cycle": shakedown_cycle,
+            "cycles_run": len(cycles) if cycles_run is None else cycles_run,
+            "steady_change": steady_change,
+            "steady_converged": steady_converged,
+            "x": x,
+            "pressure": fields.get("pressure"),
+            "traction": fields.get("traction"),
+            "slip": fields.get("slip"),
+            "slip_increment": fields.get("slip_increment"),
+        }
+        for name, value in values.items():
+            object.__setattr__(self, name, value)
 
     @property
     def cells(self) -> int:
@@ -183,6 +586,23 @@ class MarchResult:
         """Number of increments."""
         return int(len(self.steps))
 
+    @property
+    def final_state(self) -> str:
+        """The contact at the last increment: ``"full stick"`` when its largest stick interval
+        spans the contact to within a cell at each end, ``"partial slip"`` when it is shorter,
+        ``"sliding"`` when no cell sticks."""
+        if self.increments == 0:
+            return "no increments"
+        last = self.steps.iloc[-1]
+        left, right = float(last["stick_left"]), float(last["stick_right"])
+        a = float(last["half_width"])
+        if math.isnan(left) or math.isnan(right):
+            return "sliding"
+        cell = float(self.x[1] - self.x[0]) if self.cells > 1 else 0.0
+        if left <= -a + cell and right >= a - cell:
+            return "full stick"
+        return "partial slip"
+
     def __repr__(self) -> str:
         fields = "with fields" if self.pressure is not None else "no fields"
         return (
@@ -190,3 +610,65 @@ class MarchResult:
             f"{len(self.cycles)} cycles, shakedown_cycle={self.shakedown_cycle}, "
             f"steady_converged={self.steady_converged}, {fields})"
         )
+
+    def _repr_html_(self) -> str:
+        rows: List[List[str]] = [
+            ["increments", str(self.increments)],
+            ["cells", str(self.cells)],
+            ["cycles run", str(self.cycles_run)],
+            ["shakedown cycle", _text(self.shakedown_cycle)],
+            ["steady change (A f P_max)", _num(self.steady_change)],
+            ["steady converged", _text(self.steady_converged)],
+        ]
+        if len(self.cycles):
+            last_cycle = self.cycles.iloc[-1]
+            rows.append(["energy of the last cycle", _num(float(last_cycle["energy"]))])
+            rows.append(
+                ["max slip amplitude (last cycle)", _num(float(last_cycle["max_slip_amplitude"]))]
+            )
+        if self.increments:
+            last = self.steps.iloc[-1]
+            rows.append(["final state", self.final_state])
+            rows.append(
+                [
+                    "final load P, Q, σ",
+                    f"{_num(float(last['normal']))}, {_num(float(last['shear']))}, "
+                    f"{_num(float(last['bulk']))}",
+                ]
+            )
+            rows.append(["final contact half-width a", _num(float(last["half_width"]))])
+            left, right = float(last["stick_left"]), float(last["stick_right"])
+            stick = "none" if math.isnan(left) else f"[{_num(left)}, {_num(right)}]"
+            rows.append(["final stick zone (largest)", stick])
+            rows.append(["energy dissipated in all", _num(float(last["energy"]))])
+        rows.append(["fields", "recorded" if self.pressure is not None else "not recorded"])
+        return _html_table("MarchResult", rows)
+
+
+def _frame(columns: Mapping[str, Any], dtypes: Optional[Mapping[str, str]] = None) -> pd.DataFrame:
+    """A DataFrame of the native module's columns (numpy arrays, or lists of strings), in their
+    order; ``dtypes`` fixes the type of columns that may be empty."""
+    frame: pd.DataFrame = pd.DataFrame(dict(columns))
+    if dtypes and len(frame) == 0:
+        typed: pd.DataFrame = frame.astype(dict(dtypes))
+        return typed
+    return frame
+
+
+__all__ = [
+    "Asymptotic",
+    "AsymptoticStickZone",
+    "ContactState",
+    "Criteria",
+    "EdgeIntensities",
+    "Edges",
+    "Estimate",
+    "LoadPoint",
+    "MarchResult",
+    "PerPoint",
+    "Profile",
+    "Record",
+    "StickZone",
+    "SteadyResult",
+    "Units",
+]

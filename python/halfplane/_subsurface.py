@@ -3,11 +3,11 @@
 
 from __future__ import annotations
 
-import io
-import json
+import math
 import numbers
 import warnings
-from typing import Any, Dict, Mapping, Optional, Tuple
+from dataclasses import dataclass
+from typing import Any, ClassVar, Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -15,11 +15,8 @@ import pandas as pd
 
 from . import _halfplane
 from ._halfplane import Case
-from ._results import Record
+from ._results import FloatArray, Record, Units, _frame, _html_table, _num, _plain
 from .errors import InputError
-
-#: pandas before 3 parses CSV numbers to within an ulp unless asked for round-trip precision.
-_OLD_PANDAS = int(pd.__version__.split(".")[0]) < 3
 
 
 def _count(name: str, value: Any) -> int:
@@ -28,7 +25,7 @@ def _count(name: str, value: Any) -> int:
     return int(value)
 
 
-def _floats(name: str, value: Any) -> np.ndarray:
+def _floats(name: str, value: Any) -> FloatArray:
     try:
         return np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as e:
@@ -50,10 +47,10 @@ class StressResult:
         self.shear: float = float(data["shear"])
         self.bulk: float = float(data["bulk"])
         self.half_width: float = float(data["half_width"])
-        self.sxx: npt.NDArray[np.float64] = data["sxx"].reshape(shape)
-        self.szz: npt.NDArray[np.float64] = data["szz"].reshape(shape)
-        self.syy: npt.NDArray[np.float64] = data["syy"].reshape(shape)
-        self.sxz: npt.NDArray[np.float64] = data["sxz"].reshape(shape)
+        self.sxx: FloatArray = data["sxx"].reshape(shape)
+        self.szz: FloatArray = data["szz"].reshape(shape)
+        self.syy: FloatArray = data["syy"].reshape(shape)
+        self.sxz: FloatArray = data["sxz"].reshape(shape)
 
     def to_dict(self) -> Dict[str, Any]:
         """The fields by name (the arrays are the result's own)."""
@@ -64,6 +61,20 @@ class StressResult:
             f"StressResult(step={self.step}, normal={self.normal}, shear={self.shear}, "
             f"bulk={self.bulk}, shape={self.sxx.shape})"
         )
+
+    def _repr_html_(self) -> str:
+        rows: List[List[str]] = [
+            ["step", str(self.step)],
+            ["load P, Q, σ", f"{_num(self.normal)}, {_num(self.shear)}, {_num(self.bulk)}"],
+            ["contact half-width a", _num(self.half_width)],
+            ["points", f"{self.sxx.size} (shape {self.sxx.shape})"],
+        ]
+        for name in ("sxx", "szz", "syy", "sxz"):
+            values: FloatArray = getattr(self, name)
+            if values.size:
+                low, high = _num(float(values.min())), _num(float(values.max()))
+                rows.append([f"{name} min, max", f"{low}, {high}"])
+        return _html_table("StressResult", rows)
 
 
 def stress(
@@ -95,32 +106,146 @@ def stress(
     return StressResult(_halfplane.stress_points(case, flat_x, flat_z, step, cells), shape)
 
 
-class FatigueResult(Record):
-    """The report of ``halfplane fatigue --json``: ``critical_distance`` (L, length unit, None
-    when ``[fatigue]`` gives none), ``first_step`` and ``last_step`` (the steady cycle's
-    increments, 1-based), ``units``, and ``parameters``, here a DataFrame with the columns of
-    ``fatigue --csv``: ``parameter, value, x, z, plane, step, point_method, line_method, cycles,
-    tilt`` (``plane`` in degrees from +x towards +z, ``tilt`` of the plane's normal towards +y,
-    0 unless ``[fatigue] planes = "3d"``; NaN where a column does not apply).
-    ``to_dict()`` is the JSON object itself."""
+#: The ``fatigue --csv`` columns that are empty (NaN) where they do not apply; None in the JSON.
+_OPTIONAL_PARAMETER_COLUMNS = ("plane", "point_method", "line_method", "cycles", "tilt")
+#: The dtypes of the ``fatigue --csv`` columns, for a report without rows.
+_PARAMETER_DTYPES = {
+    "parameter": "object",
+    "value": "float64",
+    "x": "float64",
+    "z": "float64",
+    "plane": "float64",
+    "step": "int64",
+    "point_method": "float64",
+    "line_method": "float64",
+    "cycles": "float64",
+    "tilt": "float64",
+}
 
-    def __init__(self, data: Mapping[str, Any], csv: str) -> None:
-        super().__init__(data)
-        # Every number is parsed exactly as the command wrote it (shortest round-trip form).
-        if _OLD_PANDAS:
-            frame = pd.read_csv(io.StringIO(csv), float_precision="round_trip")
+
+def _json_row(row: Mapping[Any, Any]) -> Dict[str, Any]:
+    """A ``parameters`` row as the JSON holds it: Python numbers, None where a column does not
+    apply."""
+    out: Dict[str, Any] = {}
+    for key, value in row.items():
+        if isinstance(value, (np.integer, int)) and not isinstance(value, bool):
+            out[str(key)] = int(value)
+        elif isinstance(value, (np.floating, float)):
+            number = float(value)
+            out[str(key)] = None if math.isnan(number) else number
         else:
-            frame = pd.read_csv(io.StringIO(csv))
-        object.__setattr__(self, "_parameters", frame)
+            out[str(key)] = value
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class FatigueResult(Record):
+    """The report of ``halfplane fatigue``: ``critical_distance`` (L, length unit, None
+    when ``[fatigue]`` gives none), ``first_step`` and ``last_step`` (the steady cycle's
+    increments, 1-based), ``units`` (:class:`Units`), and ``parameters``, a DataFrame with the
+    columns of ``fatigue --csv``: ``parameter, value, x, z, plane, step, point_method,
+    line_method, cycles, tilt`` (``plane`` in degrees from +x towards +z, ``tilt`` of the plane's
+    normal towards +y, 0 unless ``[fatigue] planes = "3d"``; NaN where a column does not apply;
+    each access returns a copy). ``to_dict()`` is the ``--json`` object (``parameters`` as a
+    list of row objects, None where a column does not apply)."""
+
+    _EXTRA: ClassVar[Tuple[str, ...]] = ("_table",)
+
+    critical_distance: Optional[float]
+    first_step: int
+    last_step: int
+    _table: pd.DataFrame
+    units: Units
+
+    @classmethod
+    def _from(cls, data: Mapping[str, Any]) -> FatigueResult:
+        distance = data["critical_distance"]
+        return cls(
+            critical_distance=None if distance is None else float(distance),
+            first_step=int(data["first_step"]),
+            last_step=int(data["last_step"]),
+            _table=_frame(data["parameters"], _PARAMETER_DTYPES),
+            units=Units._from(data["units"]),
+        )
 
     @property
     def parameters(self) -> pd.DataFrame:
-        """One row per parameter: its maximum over the steady cycle and where it occurs."""
-        return self.__dict__["_parameters"].copy()
+        """One row per parameter: its maximum over the steady cycle and where it occurs (a
+        copy)."""
+        copy: pd.DataFrame = self._table.copy()
+        return copy
 
-    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:  # type: ignore[override]
-        csv = self.__dict__["_parameters"].to_csv(index=False)
-        return (type(self), (self._data, csv))
+    def _keys(self) -> List[str]:
+        keys = super()._keys()
+        keys.insert(keys.index("units"), "parameters")
+        return keys
+
+    def __getitem__(self, key: str) -> Any:
+        if key == "parameters":
+            return self.to_dict()["parameters"]
+        return super().__getitem__(key)
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The ``fatigue --json`` object."""
+        out: Dict[str, Any] = {}
+        for key in self._keys():
+            if key == "parameters":
+                records = self._table.to_dict("records")
+                out[key] = [_json_row(r) for r in records]
+            else:
+                out[key] = _plain(getattr(self, key))
+        return out
+
+    def __repr__(self) -> str:
+        best = ", ".join(
+            f"{r['parameter']}={_num(float(r['value']))}"
+            for r in self._table.to_dict("records")
+        )
+        return (
+            f"FatigueResult(steps {self.first_step}-{self.last_step}, "
+            f"critical_distance={self.critical_distance}, {best})"
+        )
+
+    def _repr_html_(self) -> str:
+        length = self.units.length
+        rows: List[List[str]] = []
+        for r in self._table.to_dict("records"):
+            plane = float(r["plane"])
+            rows.append(
+                [
+                    str(r["parameter"]),
+                    _num(float(r["value"])),
+                    _num(float(r["x"])),
+                    _num(float(r["z"])),
+                    "-" if math.isnan(plane) else f"{plane:.2f}",
+                    str(r["step"]),
+                    _num(_finite(r["cycles"])),
+                ]
+            )
+        distance = (
+            "not given"
+            if self.critical_distance is None
+            else f"{_num(self.critical_distance)} {length}"
+        )
+        return _html_table(
+            f"FatigueResult: steady cycle steps {self.first_step} to {self.last_step}, "
+            f"critical distance L {distance}",
+            rows,
+            header=(
+                "parameter",
+                "value",
+                f"x [{length}]",
+                f"z [{length}]",
+                "plane [°]",
+                "step",
+                "cycles",
+            ),
+        )
+
+
+def _finite(value: Any) -> Optional[float]:
+    number = float(value)
+    return None if math.isnan(number) else number
 
 
 def fatigue(case: Case, cells: Optional[int] = None) -> FatigueResult:
@@ -135,7 +260,7 @@ def fatigue(case: Case, cells: Optional[int] = None) -> FatigueResult:
     """
     if cells is not None:
         cells = _count("cells", cells)
-    csv, text, skipped = _halfplane.fatigue_report(case, cells)
+    report, skipped = _halfplane.fatigue_report(case, cells)
     for line in skipped:
         warnings.warn(line, UserWarning, stacklevel=2)
-    return FatigueResult(json.loads(text), csv)
+    return FatigueResult._from(report)

@@ -3,11 +3,14 @@ with (HALFPLANE_CLI, else target/debug/halfplane, built on demand)."""
 
 from __future__ import annotations
 
+import io
 import os
 import subprocess
 from pathlib import Path
 from typing import List
 
+import numpy as np
+import pandas as pd
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -37,3 +40,27 @@ def run_cli(cli: Path, args: List[str]) -> subprocess.CompletedProcess:
     return subprocess.run(
         [str(cli), *args], cwd=ROOT, capture_output=True, text=True, check=False
     )
+
+
+def read_csv(text):
+    exact = {"float_precision": "round_trip"} if int(pd.__version__.split(".")[0]) < 3 else {}
+    return pd.read_csv(io.StringIO(text), **exact)
+
+
+#: Columns of whole numbers (counts, indices); every other numeric column is float64.
+INTEGER_COLUMNS = {"half", "step", "passes", "index"}
+
+
+def assert_table_equals_the_csv(frame, text):
+    """`frame` holds the command's CSV `text` exactly, column by column, with typed columns:
+    int64 for counts, float64 for every other number (the CSV reader makes a column int64 when
+    all its numbers happen to be whole, e.g. loads of 1000; the typed frame does not)."""
+    expected = read_csv(text)
+    assert list(frame.columns) == text.splitlines()[0].split(",")
+    for name in frame.columns:
+        if name in INTEGER_COLUMNS:
+            assert frame[name].dtype == np.int64, name
+        elif pd.api.types.is_numeric_dtype(expected[name]):
+            assert frame[name].dtype == np.float64, name
+            expected[name] = expected[name].astype(np.float64)
+    pd.testing.assert_frame_equal(frame, expected, check_exact=True)

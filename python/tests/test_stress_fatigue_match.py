@@ -6,7 +6,6 @@ round-trip text. Bad input raises InputError (a ValueError) naming the field."""
 
 from __future__ import annotations
 
-import io
 import json
 import os
 
@@ -15,7 +14,7 @@ import pandas as pd
 import pytest
 
 import halfplane
-from conftest import ROOT, run_cli
+from conftest import ROOT, assert_table_equals_the_csv, run_cli
 
 FATIGUE = "examples/fatigue.toml"
 FLAT_ROUNDED = "examples/flat-rounded.toml"
@@ -93,10 +92,7 @@ def test_fatigue_equals_the_command(cli):
     assert (got.first_step, got.last_step) == (expected["first_step"], expected["last_step"])
     done = run_cli(cli, ["fatigue", FATIGUE, "--csv"])
     assert done.returncode == 0, done.stderr
-    exact = {"float_precision": "round_trip"} if int(pd.__version__.split(".")[0]) < 3 else {}
-    pd.testing.assert_frame_equal(
-        got.parameters, pd.read_csv(io.StringIO(done.stdout), **exact), check_exact=True
-    )
+    assert_table_equals_the_csv(got.parameters, done.stdout)
 
 
 def test_fatigue_warns_about_each_parameter_it_leaves_out(cli, tmp_path):

@@ -1,16 +1,19 @@
 //! The single-case analyses: `steady`, `evolve` and `march`. Each computes with the GIL released
-//! and returns the CLI's own report (the same rows and JSON), which the Python layer turns into
-//! result objects and DataFrames. A march, which may run for minutes, takes the GIL back between
-//! increments every so often to see Ctrl-C.
+//! and returns the CLI's own report as Python objects (nested dicts of floats and strings, numpy
+//! columns for the row tables: [`crate::convert`], no JSON or CSV text in between), which the
+//! Python layer wraps in typed result classes and DataFrames. A march, which may run for minutes,
+//! takes the GIL back between increments every so often to see Ctrl-C.
 
 use crate::case::PyCase;
+use crate::convert::{self, Node};
 use crate::errors;
 use halfplane::march::{self, Fields};
 use halfplane::{asymptotic, evolution, steady, Regime, SteadyOptions};
 use halfplane_cli::limits;
-use halfplane_cli::report::evolve::EvolveReport;
-use halfplane_cli::report::march::MarchReport;
+use halfplane_cli::report::evolve::{EvolveReport, EvolveRow};
+use halfplane_cli::report::march::MarchStepRow;
 use halfplane_cli::report::steady::SteadyReport;
+use halfplane_cli::report::{Column, Shown};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
@@ -18,10 +21,22 @@ use pyo3::types::PyDict;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
-/// `steady --json` of the case, and the note the CLI prints on stderr when the asymptotic
-/// estimate is unavailable.
+/// The keys of a report's CSV columns, in order.
+pub(crate) fn csv_keys<R>(columns: &[Column<R>]) -> Vec<&'static str> {
+    columns
+        .iter()
+        .filter(|c| c.shown != Shown::Table)
+        .map(|c| c.key)
+        .collect()
+}
+
+/// The `steady --json` report of the case as nested dicts, and the note the CLI prints on stderr
+/// when the asymptotic estimate is unavailable.
 #[pyfunction]
-pub fn steady_json(py: Python<'_>, case: &PyCase) -> PyResult<(String, Option<String>)> {
+pub fn steady_report<'py>(
+    py: Python<'py>,
+    case: &PyCase,
+) -> PyResult<(Bound<'py, PyAny>, Option<String>)> {
     let case = &case.case;
     let cycle = case
         .cycle()
@@ -39,24 +54,22 @@ pub fn steady_json(py: Python<'_>, case: &PyCase) -> PyResult<(String, Option<St
     let asym_ok = asym.as_ref().and_then(|a| a.as_ref().ok());
     let report = SteadyReport::new(contact, &state, asym_ok, &case.units)
         .map_err(|e| errors::from_anyhow(py, &e, None))?;
-    let json = report
-        .json()
-        .map_err(|e| errors::from_anyhow(py, &e.into(), None))?;
+    let report = convert::to_node(&report)?.into_py(py)?;
     let note = match asym {
         Some(Err(e)) => Some(format!("no asymptotic estimate: {e}")),
         _ => None,
     };
-    Ok((json, note))
+    Ok((report, note))
 }
 
-/// `evolve --csv` of the case at `points` points per half, the regime, and the warnings the CLI
-/// prints on stderr.
+/// The `evolve` report of the case at `points` points per half: its rows as one array per
+/// `evolve --csv` column, the regime, and the warnings the CLI prints on stderr.
 #[pyfunction]
-pub fn evolve_csv(
-    py: Python<'_>,
+pub fn evolve_report<'py>(
+    py: Python<'py>,
     case: &PyCase,
     points: usize,
-) -> PyResult<(String, &'static str, Vec<String>)> {
+) -> PyResult<(Bound<'py, PyDict>, &'static str, Vec<String>)> {
     let case = &case.case;
     let cycle = case
         .cycle()
@@ -66,7 +79,10 @@ pub fn evolve_csv(
         .detach(|| evolution::evolve(contact, &cycle, points, &SteadyOptions::default()))
         .map_err(|e| errors::from_library(py, &e))?;
     let report = EvolveReport::new(&ev, &case.units);
-    Ok((report.csv(), ev.regime.as_str(), report.warnings().to_vec()))
+    let node = convert::to_node(&report)?;
+    let rows = node.get("points").unwrap_or(&Node::Null);
+    let columns = convert::columns(py, rows, &csv_keys(&EvolveRow::COLUMNS))?;
+    Ok((columns, ev.regime.as_str(), report.warnings().to_vec()))
 }
 
 /// Fields of every increment, increments x cells, in one allocation each.
@@ -107,9 +123,48 @@ impl Recorded {
 /// interrupt feels immediate, rarely enough that the check costs nothing measurable.
 const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
-/// Marches the case's history (until its cycle repeats for `history.cycles = "steady"`):
-/// `march --csv` (the steps), the cycles (index, energy, largest slip amplitude, as
-/// `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
+/// One increment as a row of the `march --csv` columns, each computed as the CLI's report row
+/// computes it (`halfplane_cli::report::march`): the largest stick interval (null when none) and
+/// every interval as `left:right`, space-separated.
+fn step_row(s: &march::StepReport) -> Node {
+    let largest = s.largest_stick();
+    let intervals: Vec<String> = s
+        .stick_intervals
+        .iter()
+        .map(|[l, r]| format!("{l}:{r}"))
+        .collect();
+    let stick = |side: usize| largest.map_or(Node::Null, |z| Node::Float(z[side]));
+    let entries = [
+        ("step", Node::UInt(s.step as u64)),
+        ("normal", Node::Float(s.load.normal())),
+        ("shear", Node::Float(s.load.shear())),
+        ("bulk", Node::Float(s.load.bulk())),
+        ("half_width", Node::Float(s.half_width)),
+        ("stick_left", stick(0)),
+        ("stick_right", stick(1)),
+        ("stick_intervals", Node::Str(intervals.join(" "))),
+        ("energy_increment", Node::Float(s.energy_increment)),
+        ("energy", Node::Float(s.energy)),
+        ("passes", Node::UInt(s.passes as u64)),
+    ];
+    Node::Map(entries.map(|(k, v)| (k.to_string(), v)).to_vec())
+}
+
+/// One cycle as a row of `march --json`'s `cycles`.
+fn cycle_row(c: &march::CycleReport) -> Node {
+    Node::Map(vec![
+        ("index".into(), Node::UInt(c.index as u64)),
+        ("energy".into(), Node::Float(c.energy)),
+        (
+            "max_slip_amplitude".into(),
+            Node::Float(c.max_slip_amplitude()),
+        ),
+    ])
+}
+
+/// Marches the case's history (until its cycle repeats for `history.cycles = "steady"`): the
+/// steps (one array per `march --csv` column), the cycles (index, energy, largest slip amplitude,
+/// as `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
 /// (as `march --json`), the cell centres and, with `fields`, the four fields of every increment
 /// as (increments, cells) arrays. Unless `no_size_limit`, a march estimated to take too long, or
 /// fields too large for memory, is refused before it starts (`halfplane_cli::limits`).
@@ -179,15 +234,13 @@ pub fn march_report<'py>(
         ControlFlow::Continue(result) => result,
         ControlFlow::Break(interrupt) => return Err(interrupt),
     };
-    let report = MarchReport::new(&result, &case.units, &steady, until_steady.is_some());
     let out = PyDict::new(py);
-    out.set_item("steps_csv", report.csv())?;
-    let cycles: Vec<(usize, f64, f64)> = result
-        .cycles
-        .iter()
-        .map(|c| (c.index, c.energy, c.max_slip_amplitude()))
-        .collect();
-    out.set_item("cycles", cycles)?;
+    let steps: Vec<Node> = result.steps.iter().map(step_row).collect();
+    let keys = csv_keys(&MarchStepRow::COLUMNS);
+    out.set_item("steps", convert::columns(py, &Node::List(steps), &keys)?)?;
+    let cycles = Node::List(result.cycles.iter().map(cycle_row).collect());
+    let keys = ["index", "energy", "max_slip_amplitude"];
+    out.set_item("cycles", convert::columns(py, &cycles, &keys)?)?;
     out.set_item("shakedown_cycle", result.shakedown_cycle)?;
     out.set_item("cycles_run", result.cycles.len())?;
     out.set_item("steady_change", result.steady_change)?;

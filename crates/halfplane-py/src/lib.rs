@@ -1,12 +1,14 @@
 //! The native module `halfplane._halfplane` behind the Python package in `python/`. It holds no
 //! physics and no formats of its own: cases are read by the CLI's case parser
-//! (`halfplane_cli::case`), reports are the CLI's report rows, and batches run on
-//! [`halfplane::batch`]. The Python layer (`python/halfplane/__init__.py`) builds the public API
-//! (DataFrames, result objects) on these functions.
+//! (`halfplane_cli::case`), reports are the CLI's report rows, converted to Python objects and
+//! numpy arrays without text (the `convert` module), and batches run on [`halfplane::batch`]. The Python
+//! layer (`python/halfplane/__init__.py`) builds the public API (typed result classes,
+//! DataFrames) on these functions.
 
 mod analyses;
 mod batch;
 mod case;
+mod convert;
 mod errors;
 mod matching;
 mod subsurface;
@@ -19,8 +21,8 @@ fn _halfplane(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<case::PyCase>()?;
     m.add_function(wrap_pyfunction!(case::read_case, m)?)?;
     m.add_function(wrap_pyfunction!(case::_case_from_state, m)?)?;
-    m.add_function(wrap_pyfunction!(analyses::steady_json, m)?)?;
-    m.add_function(wrap_pyfunction!(analyses::evolve_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(analyses::steady_report, m)?)?;
+    m.add_function(wrap_pyfunction!(analyses::evolve_report, m)?)?;
     m.add_function(wrap_pyfunction!(analyses::march_report, m)?)?;
     m.add_function(wrap_pyfunction!(batch::steady_batch_columns, m)?)?;
     m.add_function(wrap_pyfunction!(subsurface::stress_points, m)?)?;

@@ -1,8 +1,10 @@
 //! `match`: the test that reproduces a prototype's contact-edge state. It runs the CLI's own
 //! [`halfplane_cli::commands::matching::compute`] (the same test contact from the options, the
-//! same report and test case text), writing no file.
+//! same report and test case text), writing no file; the report reaches Python as nested dicts
+//! ([`crate::convert`]), not JSON text.
 
 use crate::case::PyCase;
+use crate::convert;
 use crate::errors;
 use halfplane_cli::args::{TestArgs, TestProfile};
 use halfplane_cli::commands::matching::{compute, MatchConfig};
@@ -15,14 +17,14 @@ const PROTOTYPE_NAME: &str = "<prototype>";
 /// The test case's file name: the mapped history's table is named after it.
 const TEST_NAME: &str = "test.toml";
 
-/// `halfplane match CASE -o test.toml --json` with the test options: the report's JSON, the test
-/// case (read back from the text `match` writes) and the warnings and notes.
+/// `halfplane match CASE -o test.toml --json` with the test options: the report as nested dicts,
+/// the test case (read back from the text `match` writes) and the warnings and notes.
 #[pyfunction]
 #[pyo3(signature = (case, profile, radius=None, flat_half_width=None, coefficient=None,
     exponent=None, youngs_modulus=None, poisson_ratio=None, friction=None, exact=false))]
 #[allow(clippy::too_many_arguments)]
-pub fn match_report(
-    py: Python<'_>,
+pub fn match_report<'py>(
+    py: Python<'py>,
     case: &PyCase,
     profile: &str,
     radius: Option<f64>,
@@ -33,7 +35,7 @@ pub fn match_report(
     poisson_ratio: Option<f64>,
     friction: Option<f64>,
     exact: bool,
-) -> PyResult<(String, PyCase, String, Vec<String>)> {
+) -> PyResult<(Bound<'py, PyAny>, PyCase, String, Vec<String>)> {
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let profile = match profile {
         "hertz" => TestProfile::Hertz,
@@ -66,9 +68,8 @@ pub fn match_report(
     )
     .map_err(input)?;
     let matched = py.detach(|| compute(&config)).map_err(input)?;
-    let json = MatchReportOut::new(&matched.report, &config, &matched.notes)
-        .json()
-        .map_err(|e| input(e.into()))?;
+    let report = MatchReportOut::new(&matched.report, &config, &matched.notes);
+    let report = convert::to_node(&report)?.into_py(py)?;
     let dir = tempfile::tempdir().map_err(|e| {
         pyo3::exceptions::PyOSError::new_err(format!("cannot create a temporary directory: {e}"))
     })?;
@@ -78,5 +79,5 @@ pub fn match_report(
         })?;
     }
     let test_case = PyCase::from_text(py, &matched.test_case, dir.path())?;
-    Ok((json, test_case, matched.test_case, matched.notes))
+    Ok((report, test_case, matched.test_case, matched.notes))
 }

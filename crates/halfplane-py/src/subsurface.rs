@@ -1,12 +1,15 @@
 //! Below the surface: `stress` (the stresses at points at one marched increment) and `fatigue`
 //! (the initiation parameters over the steady cycle). Both run the CLI's own functions and report
-//! rows with the GIL released, so the numbers are the command's by construction.
+//! rows with the GIL released, so the numbers are the command's by construction; the reports
+//! reach Python as objects and numpy arrays, not text ([`crate::convert`]).
 
+use crate::analyses::csv_keys;
 use crate::case::PyCase;
+use crate::convert;
 use crate::errors;
 use halfplane::fatigue;
 use halfplane_cli::commands::stress as stress_command;
-use halfplane_cli::report::fatigue::FatigueReport;
+use halfplane_cli::report::fatigue::{FatigueReport, FatigueRow};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -64,15 +67,16 @@ pub fn stress_points<'py>(
     Ok(out)
 }
 
-/// `halfplane fatigue CASE --cells CELLS`: the report as `--csv` and as `--json`, and the lines
-/// the command writes on stderr for the parameters `[fatigue]` leaves out.
+/// `halfplane fatigue CASE --cells CELLS`: the `--json` report as a dict whose `parameters` are
+/// one array per `--csv` column, and the lines the command writes on stderr for the parameters
+/// `[fatigue]` leaves out.
 #[pyfunction]
 #[pyo3(signature = (case, cells=None))]
-pub fn fatigue_report(
-    py: Python<'_>,
+pub fn fatigue_report<'py>(
+    py: Python<'py>,
     case: &PyCase,
     cells: Option<usize>,
-) -> PyResult<(String, String, Vec<String>)> {
+) -> PyResult<(Bound<'py, PyAny>, Vec<String>)> {
     let case = &case.case;
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let settings = case.fatigue().map_err(input)?;
@@ -93,6 +97,9 @@ pub fn fatigue_report(
         })
         .map_err(|e| errors::from_library(py, &e))?;
     let report = FatigueReport::new(&result, &case.units);
-    let json = report.json().map_err(|e| input(e.into()))?;
-    Ok((report.csv(), json, settings.skipped()))
+    let (summary, rows) = convert::to_node(&report)?.take("parameters");
+    let out = summary.into_py(py)?;
+    let columns = convert::columns(py, &rows, &csv_keys(&FatigueRow::COLUMNS))?;
+    out.set_item("parameters", columns)?;
+    Ok((out, settings.skipped()))
 }
