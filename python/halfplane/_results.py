@@ -207,7 +207,7 @@ class LoadPoint(Record):
 
 @dataclass(frozen=True, eq=False)
 class Criteria(Record):
-    """The regime's criteria: ``shear_ratio_1``, ``_2`` (|Q|/P at the analysis's points 1 and 2),
+    """The regime's criteria: ``shear_ratio_1``, ``_2`` (|Q|/P at point1 and point2 as given),
     ``full_stick_ratio`` ((|dQ| + pi a_max |dsigma|/4)/|dP|, eq. (1); None when dP = 0),
     ``shear_range`` dQ, ``bulk_term`` (pi a_max |dsigma|/4) and ``friction`` f."""
 
@@ -232,7 +232,7 @@ class Criteria(Record):
 
 @dataclass(frozen=True, eq=False)
 class ContactState(Record):
-    """The contact at the analysis's points 1 and 2: ``half_width_1``, ``_2`` (a) and
+    """The contact at point1 and point2 as given: ``half_width_1``, ``_2`` (a) and
     ``normal_intensity_1``, ``_2`` (K_N)."""
 
     half_width_1: float
@@ -392,7 +392,7 @@ class SteadyResult(Record):
     - ``regime``: ``"partial-slip"``, ``"full-stick"`` or ``"gross-sliding"``;
     - ``profile`` (:class:`Profile`), ``compliance`` A, ``friction`` f;
     - ``points``: the loads at ``at_point1`` and ``at_point2`` as given (:class:`LoadPoint`);
-    - ``contact.half_width_1``, ``_2``: contact half-width a at the analysis's points 1 and 2
+    - ``contact.half_width_1``, ``_2``: contact half-width a at point1, point2 as given
       (:class:`ContactState`);
     - ``stick_zone.left``, ``.right``: the permanent stick zone [-m, n] (x positive in the
       direction of positive Q); ``.half_width`` d = (m + n)/2, ``.eccentricity`` e = (n - m)/2;
@@ -464,11 +464,7 @@ class SteadyResult(Record):
         u = self.units
         force = f"{u.force}/{u.length}"
         p1, p2 = self.points.at_point1, self.points.at_point2
-        # The contact's half-widths are the analysis's points 1 and 2 (point 1 the end of smaller
-        # Q); the table's columns are the points as given.
         first, second = self.contact.half_width_1, self.contact.half_width_2
-        if self.smaller_shear_point == "point2":
-            first, second = second, first
         rows: List[List[str]] = [
             ["regime", self.regime],
             [f"normal P [{force}]", _num(p1.normal), _num(p2.normal)],
@@ -496,7 +492,7 @@ class SteadyResult(Record):
         c = self.criteria
         rows.append(
             [
-                "criteria |Q|/P (analysis points 1, 2)",
+                "|Q|/P",
                 _num(c.shear_ratio_1),
                 _num(c.shear_ratio_2),
             ]
