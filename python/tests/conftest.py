@@ -64,3 +64,23 @@ def assert_table_equals_the_csv(frame, text):
             assert frame[name].dtype == np.float64, name
             expected[name] = expected[name].astype(np.float64)
     pd.testing.assert_frame_equal(frame, expected, check_exact=True)
+
+
+def assert_attributes_equal(record, expected, path="result", skip=()):
+    """Every key of the command's JSON object `expected` (but those in `skip`) is an attribute of
+    `record` holding the same value (nested objects as records, lists as tuples, null as None),
+    and a number is a Python float or int, not a string."""
+    assert [k for k in record if k not in skip] == [k for k in expected if k not in skip], path
+    for key, want in expected.items():
+        if key in skip:
+            continue
+        got = getattr(record, key)
+        where = f"{path}.{key}"
+        if isinstance(want, dict):
+            assert_attributes_equal(got, want, where)
+        elif isinstance(want, list):
+            assert list(got) == want, where
+        elif isinstance(want, bool) or want is None or isinstance(want, str):
+            assert got == want and type(got) is type(want), where
+        else:
+            assert isinstance(got, (int, float)) and got == want, where

@@ -14,7 +14,14 @@ import pandas as pd
 import pytest
 
 import halfplane
-from conftest import EXAMPLES, ROOT, assert_table_equals_the_csv, read_csv, run_cli
+from conftest import (
+    EXAMPLES,
+    ROOT,
+    assert_attributes_equal,
+    assert_table_equals_the_csv,
+    read_csv,
+    run_cli,
+)
 
 IDS = [p.name for p in EXAMPLES]
 
@@ -37,24 +44,6 @@ def cli_error(done):
     first = done.stderr.splitlines()[0]
     assert first.startswith("error: ")
     return first[len("error: "):]
-
-
-def assert_attributes_equal(record, expected, path="result"):
-    """Every key of the command's JSON object `expected` is an attribute of `record` holding the
-    same value (nested objects as records, lists as tuples, null as None), and a number is a
-    Python float or int, not a string."""
-    assert list(record) == list(expected), path
-    for key, want in expected.items():
-        got = getattr(record, key)
-        where = f"{path}.{key}"
-        if isinstance(want, dict):
-            assert_attributes_equal(got, want, where)
-        elif isinstance(want, list):
-            assert list(got) == want, where
-        elif isinstance(want, bool) or want is None or isinstance(want, str):
-            assert got == want and type(got) is type(want), where
-        else:
-            assert isinstance(got, (int, float)) and got == want, where
 
 
 def test_there_are_examples_of_every_kind():
