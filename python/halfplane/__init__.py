@@ -34,23 +34,17 @@ from . import _halfplane
 from ._batch import STEADY_COLUMNS, steady_batch
 from ._halfplane import Case, read_case
 from ._matching import MatchResult, MatchSide, Mismatch, match
+from ._records import Edges, LoadPoint, PerPoint, Profile, Record, Units, _frame
 from ._results import (
     Asymptotic,
     AsymptoticStickZone,
     ContactState,
     Criteria,
     EdgeIntensities,
-    Edges,
     Estimate,
-    LoadPoint,
     MarchResult,
-    PerPoint,
-    Profile,
-    Record,
     SteadyResult,
     StickZone,
-    Units,
-    _frame,
 )
 from ._subsurface import FatigueResult, StressResult, fatigue, stress
 from .errors import (

@@ -8,7 +8,7 @@ from typing import Any, ClassVar, Dict, List, Mapping, Optional, Tuple
 
 from . import _halfplane
 from ._halfplane import Case
-from ._results import (
+from ._records import (
     Edges,
     LoadPoint,
     PerPoint,

@@ -15,7 +15,7 @@ import pandas as pd
 
 from . import _halfplane
 from ._halfplane import Case
-from ._results import FloatArray, Record, Units, _frame, _html_table, _num, _plain
+from ._records import FloatArray, Record, Units, _frame, _html_table, _num, _plain
 from .errors import InputError
 
 
