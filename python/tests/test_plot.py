@@ -110,12 +110,12 @@ def test_slip_map_follows_the_hertz_closed_form():
     # P2 = P1 without tension: the stick zone is centred with d^2 = (AR/pi)(2 P0 - dQ/f) (paper
     # eq. (30)) and a0^2 = 2 P0 A R/pi, so y = 1 - sqrt(1 - x/2) exactly (1e-12: rounding). This
     # also checks a0, which the figure takes from a second batch at P0.
-    plain = line(ax, "P2/P1 = 1, Δσ/P1 = 0")
+    plain = line(ax, "P2/P1 = 1, Δσ/P1 = 0/mm")
     x = np.asarray(plain.get_xdata())
     assert np.allclose(x, np.arange(1, 20) / 20.0, rtol=1e-12)
     assert np.allclose(plain.get_ydata(), 1.0 - np.sqrt(1.0 - x / 2.0), rtol=1e-12, atol=1e-12)
     # With tension the analysis stops before the full-stick limit: those points are gaps (NaN).
-    tension = np.asarray(line(ax, "P2/P1 = 1.5, Δσ/P1 = 0.05").get_ydata())
+    tension = np.asarray(line(ax, "P2/P1 = 1.5, Δσ/P1 = 0.05/mm").get_ydata())
     assert np.isnan(tension).any() and np.isfinite(tension).any()
     assert len(ax.get_lines()) == 4
     assert ax.get_xlabel() == "shear range ΔQ/(f P0)" and ax.get_title() == "Slip-zone map, f = 0.6"

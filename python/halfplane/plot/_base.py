@@ -69,6 +69,12 @@ def plain(value: float, digits: int = 4) -> str:
     return f"{value:.{min(max(decimals, 0), 12)}f}"
 
 
+def level(value: float) -> str:
+    """A contour level's label: 3 significant figures in plain notation, trailing zeros off."""
+    text = plain(float(value), 3)
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
 def plain_axis(axis: Any) -> None:
     """Tick labels of ``axis`` in plain notation: no offset, no scientific factor."""
     formatter = importlib.import_module("matplotlib.ticker").ScalarFormatter(useOffset=False)

@@ -129,6 +129,7 @@ def slip_map(
     results: pd.DataFrame,
     *,
     friction: Optional[float] = None,
+    units: Optional[Mapping[str, str]] = None,
     ax: Optional[Axes] = None,
 ) -> Axes:
     """A slip-zone map in the style of the paper's Figure 5, as ``halfplane plot slip-map``: the
@@ -142,7 +143,8 @@ def slip_map(
     :func:`~halfplane.steady_batch` call of the same contacts held at P0, so any profile
     works). Rows whose analysis failed (gross sliding, slip reversing in a half) are left out,
     which breaks a curve; full stick is y = 0. With several friction coefficients in ``cases``,
-    ``friction`` picks the one drawn. Returns the Axes.
+    ``friction`` picks the one drawn; ``units`` names the length unit of dsigma/P1 in the
+    legend. Returns the Axes.
     """
     loads = ["normal1", "shear1", "bulk1", "normal2", "shear2", "bulk2"]
     require_columns(cases, loads + ["friction"], "cases")
@@ -166,6 +168,7 @@ def slip_map(
     y = (smaller - floats(out, "stick_right")) / a0
     ratio = np.round(p2 / p1, 12)
     tension = np.round((floats(rows, "bulk1") - floats(rows, "bulk2")) / p1, 12)
+    _, length, _ = unit_names(units)
     ax = new_axes(ax)
     styles = ["-", "--", ":", "-."]
     tensions: List[float] = sorted(set(tension.tolist()))
@@ -177,7 +180,7 @@ def slip_map(
             order = np.argsort(x[curve], kind="stable")
             ax.plot(
                 x[curve][order], y[curve][order], styles[j % len(styles)], color=f"C{i % 10}",
-                lw=1.6, label=f"P2/P1 = {r:g}, Δσ/P1 = {t:g}",
+                lw=1.6, label=f"P2/P1 = {r:g}, Δσ/P1 = {t:g}/{length}",
             )
     ax.set_xlim(0.0, 1.0)
     ax.set_ylim(bottom=0.0)
@@ -185,7 +188,7 @@ def slip_map(
     ax.set_ylabel("right slip zone at the smaller contact (min(a1, a2) − n)/a0")
     ax.set_title(f"Slip-zone map, f = {friction:g}")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, title="Δσ/P1 per unit length", title_fontsize=7)
+    ax.legend(fontsize=7)
     return ax
 
 

@@ -15,6 +15,7 @@ from .._subsurface import FatigueResult, StressResult
 from ._base import (
     Floats,
     floats,
+    level,
     mark,
     new_axes,
     plain,
@@ -73,10 +74,11 @@ def _contour_field(ax: Axes, gx: Floats, gz: Floats, values: Floats, levels: int
     filled = ax.contourf(gx, gz, values, levels=edges, cmap=cmap, norm=norm)
     if len(bounds):
         lines = ax.contour(gx, gz, values, levels=bounds, colors="k", linewidths=0.5, alpha=0.6)
-        ax.clabel(lines, bounds[::2], inline=True, fontsize=7, fmt=lambda v: plain(float(v), 3))
+        ax.clabel(lines, bounds[::2], inline=True, fontsize=7, fmt=level)
     figure = ax.get_figure()
     assert figure is not None
-    cbar = figure.colorbar(filled, ax=ax, label=label, shrink=0.9)
+    # An inset colour bar keeps the height of the equal-aspect axes box.
+    cbar = figure.colorbar(filled, cax=ax.inset_axes((1.03, 0.0, 0.035, 1.0)), label=label)
     plain_axis(cbar.ax.yaxis)
 
 
@@ -120,22 +122,30 @@ def stress_map(
     gx, gz = _grid(x, z, values.shape)
     _, length, stress = unit_names(units)
     name = _COMPONENTS[component]
-    ax = new_axes(ax, (7.2, 4.6))
+    spans = (float(np.ptp(gx)), float(np.ptp(gz)))
+    ratio = min(max(spans[1] / max(spans[0], 1e-300), 0.2), 1.0)
+    ax = new_axes(ax, (7.5, 5.7 * ratio + 1.4))
     _contour_field(ax, gx, gz, values, levels, f"{name} ({stress})")
     a = result.half_width
     ax.plot([-a, a], [0.0, 0.0], "-", color="k", lw=4, solid_capstyle="butt",
             label=f"contact, a = {plain(a)} {length}", zorder=4)
     peak = int(np.nanargmax(values))
     px, pz = float(gx.flat[peak]), float(gz.flat[peak])
-    mark(ax, px, pz, f"max {name} = {plain(float(values.flat[peak]))} {stress} "
-                     f"at x = {plain(px)}, z = {plain(pz)} {length}")
-    _xz_axes(ax, length)
-    ax.set_title(
-        f"{name} at step {result.step} (P = {plain(result.normal)}, Q = {plain(result.shear)}, "
-        f"σ = {plain(result.bulk)})",
-        fontsize=10,
+    peak_text = (
+        f"max {name} = {plain(float(values.flat[peak]))} {stress} "
+        f"at x = {plain(px)}, z = {plain(pz)} {length}"
     )
-    ax.legend(fontsize=7, loc="lower right", framealpha=0.9)
+    mark(ax, px, pz, peak_text)
+    _xz_axes(ax, length)
+    force, _, _ = unit_names(units)
+    # The loads, the maximum (the star) and the contact (the bar) in the title: a legend would
+    # cover the field.
+    ax.set_title(
+        f"{name} at step {result.step}: P = {result.normal:g} {force}, "
+        f"Q = {result.shear:g} {force}, σ = {result.bulk:g} {stress}\n"
+        f"★ {peak_text}; bar: contact, a = {plain(a)} {length}",
+        fontsize=9,
+    )
     return ax
 
 
@@ -182,12 +192,15 @@ def fatigue_map(
     """
     table = _fatigue_rows(result, parameters)
     _, length, stress = unit_names(units)
-    ax = new_axes(ax, (7.2, 4.8))
+    ax = new_axes(ax, (8.0, 4.2))
     xs, zs = floats(table, "x"), floats(table, "z")
     a = float(half_width) if half_width is not None else 0.0
-    span = max(float(np.ptp(xs)), float(np.ptp(zs)), 0.5 * a, 1e-3)
     critical = result.critical_distance
-    reach = 0.15 * span if critical is None else max(0.15 * span, 2.0 * float(critical))
+    depth = 2.0 * float(critical) if critical is not None else 0.0
+    # The window: around the maxima, wide enough to show the planes, the line-method line and
+    # (from a tenth of the contact) where they sit on it.
+    span = max(float(np.ptp(xs)), float(np.ptp(zs)), 1.5 * depth, 0.1 * a, 1e-3)
+    reach = 0.5 * span
     names = [str(p) for p in table["parameter"]]
     rows = zip(names, floats(table, "value"), floats(table, "plane"), xs, zs)
     for i, (parameter, value, plane, px, pz) in enumerate(rows):
@@ -205,7 +218,6 @@ def fatigue_map(
     for px, pz in places:
         ax.plot([px], [pz], marker="*", ms=14, color="k", mfc="yellow", ls="none", zorder=5)
     if critical is not None:
-        depth = 2.0 * float(critical)
         for px in sorted({p[0] for p in places}):
             ax.plot([px, px], [0.0, depth], ":", color="k", lw=1.2, zorder=4)
         ax.plot([], [], ":", color="k", lw=1.2,
@@ -213,9 +225,10 @@ def fatigue_map(
     if half_width is not None:
         ax.plot([-a, a], [0.0, 0.0], "-", color="0.3", lw=4, solid_capstyle="butt",
                 label=f"contact, a = {plain(a)} {length}", zorder=3)
-    pad = 0.6 * reach
-    ax.set_xlim(min(float(xs.min()), -a) - pad, max(float(xs.max()), a) + pad)
-    ax.set_ylim(max(float(zs.max()), 2.0 * float(critical or 0.0)) + pad, -pad)
+    middle = 0.5 * (float(xs.min()) + float(xs.max()))
+    half = 0.5 * float(np.ptp(xs)) + span
+    ax.set_xlim(middle - half, middle + half)
+    ax.set_ylim(max(float(zs.max()), depth) + 0.5 * span, -0.2 * span)
     ax.set_aspect("equal")
     ax.set_xlabel(f"position x ({length})")
     ax.set_ylabel(f"depth z ({length})")
@@ -224,7 +237,7 @@ def fatigue_map(
         f"Maxima over the steady cycle (steps {result.first_step}–{result.last_step})",
         fontsize=10,
     )
-    ax.legend(fontsize=7, loc="best", framealpha=0.9)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
     return ax
 
 
@@ -407,7 +420,7 @@ def design_map(
             mesh = ax.pcolormesh(_cell_edges(ux), _cell_edges(uy), masked, cmap="viridis")
             if np.isfinite(cells).sum() >= 4:
                 lines = ax.contour(ux, uy, masked, levels=8, colors="w", linewidths=0.7)
-                ax.clabel(lines, inline=True, fontsize=7, fmt=lambda v: plain(float(v), 3))
+                ax.clabel(lines, inline=True, fontsize=7, fmt=level)
         else:
             mesh = ax.scatter(xs, ys, c=values, cmap="viridis", s=14, plotnonfinite=False)
         figure = ax.get_figure()
