@@ -11,7 +11,7 @@ import os
 import re
 import sys
 from pathlib import Path
-from typing import Any, List
+from typing import Any
 
 from docutils import nodes
 
@@ -20,7 +20,7 @@ HERE = Path(__file__).resolve().parent
 DOCS = Path(os.environ.get("HALFPLANE_DOCS_SOURCE", HERE))
 sys.path.insert(0, str(HERE / "_ext"))
 
-import halfplane  # noqa: E402  (the installed package the site documents)
+import halfplane  # the installed package the site documents
 
 project = "halfplane"
 author = "the halfplane developers"
@@ -53,13 +53,13 @@ nitpick_ignore_regex = [
     (r"py:class", r"optional"),
 ]
 
-def _repository_files() -> List[str]:
+def _repository_files() -> list[str]:
     """Links of the pages to files of the repository outside docs/ (source files, examples):
     GitHub shows them, the site has no page for them. Each must exist (a link to a missing file
     is still an error); the site shows its text without a link."""
     found = []
     for page in DOCS.glob("*.md"):
-        for target in re.findall(r"\]\((\.\./[^)\s]+)\)|^\[[^\]]+\]: (\.\./\S+)", page.read_text(), re.M):
+        for target in re.findall(r"\]\((\.\./[^)\s]+)\)|^\[[^\]]+\]: (\.\./\S+)", page.read_text(), re.MULTILINE):
             path = next(t for t in target if t)
             if (DOCS / path.split("#")[0]).exists():
                 found.append(path)
@@ -105,7 +105,7 @@ def _unlink_repository_files(app: Any, doctree: nodes.document, docname: str) ->
 _BARS = re.compile(r"(``.*?``)|\|")
 
 
-def _absolute_values(app: Any, what: str, name: str, obj: Any, options: Any, lines: List[str]) -> None:
+def _absolute_values(app: Any, what: str, name: str, obj: Any, options: Any, lines: list[str]) -> None:
     lines[:] = [_BARS.sub(lambda m: m.group(1) or "\\|", line) for line in lines]
 
 

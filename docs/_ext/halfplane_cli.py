@@ -11,7 +11,7 @@ import os
 import re
 import subprocess
 from pathlib import Path
-from typing import Any, Dict, List
+from typing import Any
 
 from docutils import nodes
 from docutils.statemachine import StringList
@@ -34,7 +34,7 @@ def command() -> Path:
     return path
 
 
-def help_text(args: List[str]) -> str:
+def help_text(args: list[str]) -> str:
     done = subprocess.run(
         [str(command()), *args, "--help"],
         capture_output=True,
@@ -47,9 +47,9 @@ def help_text(args: List[str]) -> str:
     return done.stdout.rstrip()
 
 
-def listed(text: str, heading: str) -> List[str]:
+def listed(text: str, heading: str) -> list[str]:
     """The names under ``heading`` ("Commands:", "Figures:") of a clap help text, without help."""
-    names: List[str] = []
+    names: list[str] = []
     inside = False
     for line in text.splitlines():
         if line.strip() == heading:
@@ -65,7 +65,7 @@ def listed(text: str, heading: str) -> List[str]:
     return names
 
 
-def section(title: str, underline: str, text: str) -> List[str]:
+def section(title: str, underline: str, text: str) -> list[str]:
     heading = f"``{title}``"
     body = ["", heading, underline * len(heading), "", ".. code-block:: text", ""]
     return body + ["   " + line if line else "" for line in text.splitlines()] + [""]
@@ -76,7 +76,7 @@ class CliReference(SphinxDirective):
 
     has_content = False
 
-    def run(self) -> List[nodes.Node]:
+    def run(self) -> list[nodes.Node]:
         top = help_text([])
         lines = ["", ".. code-block:: text", ""] + ["   " + ln if ln else "" for ln in top.splitlines()]
         for name in listed(top, "Commands:"):
@@ -90,6 +90,6 @@ class CliReference(SphinxDirective):
         return list(container.children)
 
 
-def setup(app: Sphinx) -> Dict[str, Any]:
+def setup(app: Sphinx) -> dict[str, Any]:
     app.add_directive("halfplane-cli", CliReference)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

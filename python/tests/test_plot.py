@@ -9,20 +9,18 @@ import math
 import subprocess
 import sys
 
+import halfplane
 import numpy as np
 import pandas as pd
 import pytest
-
-import halfplane
 from conftest import ROOT
 
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.collections import PathCollection, QuadMesh  # noqa: E402
-from matplotlib.contour import ContourSet  # noqa: E402
-
-from halfplane import plot  # noqa: E402
+import matplotlib.pyplot as plt
+from halfplane import plot
+from matplotlib.collections import PathCollection, QuadMesh
+from matplotlib.contour import ContourSet
 
 EXAMPLES = ROOT / "examples"
 
@@ -269,7 +267,7 @@ def test_fatigue_map_marks_each_maximum_and_its_plane():
     assert any(ln.get_label().startswith("mwcm = ") and " MPa" in ln.get_label() for ln in ax.get_lines())
     assert ax.get_aspect() == 1.0 and ax.yaxis_inverted()
     only = plot.fatigue_map(result, ["swt"])
-    assert [ln.get_label().split(" =")[0] for ln in only.get_lines() if "=" in ln.get_label()][0] == "swt"
+    assert next(ln.get_label().split(" =")[0] for ln in only.get_lines() if "=" in ln.get_label()) == "swt"
     with pytest.raises(ValueError, match="invalid parameter 'wst'"):
         plot.fatigue_map(result, ["wst"])
 
@@ -287,7 +285,7 @@ def design():
 def test_design_map_draws_each_case_as_a_cell_with_readable_axes(design):
     frame, shears, normals = design
     ax = plot.design_map(frame, "shear2", "normal2", "slip_right_1")
-    mesh = [c for c in ax.collections if isinstance(c, QuadMesh)][0]
+    mesh = next(c for c in ax.collections if isinstance(c, QuadMesh))
     expected = frame.slip_right_1.to_numpy().reshape(len(normals), len(shears))
     drawn = np.ma.filled(mesh.get_array().reshape(expected.shape).astype(float), np.nan)
     assert np.array_equal(drawn, expected, equal_nan=True)
@@ -309,14 +307,14 @@ def test_design_map_draws_each_case_as_a_cell_with_readable_axes(design):
 def test_design_map_of_regimes_and_of_scattered_rows(design):
     frame, shears, normals = design
     ax = plot.design_map(frame, "shear2", "normal2")
-    mesh = [c for c in ax.collections if isinstance(c, QuadMesh)][0]
+    mesh = next(c for c in ax.collections if isinstance(c, QuadMesh))
     names = ["full-stick", "partial-slip", "gross-sliding", ""]
     codes = np.array([names.index(r) for r in frame.regime]).reshape(len(normals), len(shears))
     assert np.array_equal(np.asarray(mesh.get_array()).reshape(codes.shape), codes)
     assert sorted(t.get_text() for t in ax.get_legend().get_texts()) == sorted(set(frame.regime))
     scattered = frame.sample(frac=0.5, random_state=1)
     ax = plot.design_map(scattered, "shear2", "normal2", "stick_right")
-    points = [c for c in ax.collections if isinstance(c, PathCollection)][0]
+    points = next(c for c in ax.collections if isinstance(c, PathCollection))
     assert np.array_equal(points.get_offsets(), scattered[["shear2", "normal2"]].to_numpy())
 
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import importlib
 import math
-from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence, Tuple
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -29,7 +30,7 @@ def pyplot() -> Any:
         ) from e
 
 
-def new_axes(ax: Optional[Axes], size: Tuple[float, float] = (6.4, 4.6)) -> Axes:
+def new_axes(ax: Axes | None, size: tuple[float, float] = (6.4, 4.6)) -> Axes:
     """``ax``, or the Axes of a new pyplot figure (so notebooks and the gallery show it)."""
     if ax is not None:
         return ax
@@ -37,7 +38,7 @@ def new_axes(ax: Optional[Axes], size: Tuple[float, float] = (6.4, 4.6)) -> Axes
     return new  # type: ignore[no-any-return]
 
 
-def new_pair(axes: Optional[Sequence[Axes]]) -> Tuple[Figure, Axes, Axes]:
+def new_pair(axes: Sequence[Axes] | None) -> tuple[Figure, Axes, Axes]:
     """The two Axes given and their figure, or a new figure of two panels side by side."""
     if axes is not None:
         if len(axes) != 2:
@@ -50,7 +51,7 @@ def new_pair(axes: Optional[Sequence[Axes]]) -> Tuple[Figure, Axes, Axes]:
     return fig, pair[0], pair[1]
 
 
-def unit_names(units: Optional[Mapping[str, str]]) -> Tuple[str, str, str]:
+def unit_names(units: Mapping[str, str] | None) -> tuple[str, str, str]:
     """(force per length, length, stress) names for axis labels from ``{"force", "length",
     "stress"}`` names (default N, mm, MPa: "N/mm", "mm", "MPa")."""
     given = dict(units or {})

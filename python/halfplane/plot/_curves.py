@@ -4,14 +4,23 @@ cycle and the fields of a march."""
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, List, Mapping, Optional, Sequence, Tuple
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
 
 from .._batch import steady_batch
 from .._results import MarchResult, SteadyResult
-from ._base import Floats, floats, new_axes, new_pair, plain_axis, require_columns, unit_names
+from ._base import (
+    Floats,
+    floats,
+    new_axes,
+    new_pair,
+    plain_axis,
+    require_columns,
+    unit_names,
+)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -44,9 +53,9 @@ def _friction_lines(ax: Axes, f: float, top: float, force: str) -> None:
 
 def load_space(
     result: SteadyResult,
-    evolution: Optional[pd.DataFrame] = None,
+    evolution: pd.DataFrame | None = None,
     *,
-    axes: Optional[Sequence[Axes]] = None,
+    axes: Sequence[Axes] | None = None,
 ) -> Figure:
     """The load space of a cycle (the paper's Figure 2 and its P-S counterpart), as
     ``halfplane plot load-space``.
@@ -67,7 +76,7 @@ def load_space(
     bulk = np.array([p.bulk for p in ends], dtype=np.float64)
     contact = result.contact
     half_width = np.array([contact.half_width_1, contact.half_width_2], dtype=np.float64)
-    path: Optional[pd.DataFrame] = None
+    path: pd.DataFrame | None = None
     if evolution is not None:
         require_columns(evolution, ["half", "normal", "shear", "bulk", "half_width"], "evolution")
         path = evolution[evolution["half"] == 1]
@@ -106,7 +115,7 @@ def load_space(
     return fig
 
 
-def _pick_friction(cases: pd.DataFrame, friction: Optional[float]) -> Tuple[float, np.ndarray]:
+def _pick_friction(cases: pd.DataFrame, friction: float | None) -> tuple[float, np.ndarray]:
     """The friction coefficient drawn and the rows that have it."""
     values = floats(cases, "friction")
     frictions = np.unique(values)
@@ -128,9 +137,9 @@ def slip_map(
     cases: pd.DataFrame,
     results: pd.DataFrame,
     *,
-    friction: Optional[float] = None,
-    units: Optional[Mapping[str, str]] = None,
-    ax: Optional[Axes] = None,
+    friction: float | None = None,
+    units: Mapping[str, str] | None = None,
+    ax: Axes | None = None,
 ) -> Axes:
     """A slip-zone map in the style of the paper's Figure 5, as ``halfplane plot slip-map``: the
     slip zone at the right edge of the smaller contact, (min(a1, a2) - n)/a0, against the shear
@@ -171,7 +180,7 @@ def slip_map(
     _, length, _ = unit_names(units)
     ax = new_axes(ax)
     styles = ["-", "--", ":", "-."]
-    tensions: List[float] = sorted(set(tension.tolist()))
+    tensions: list[float] = sorted(set(tension.tolist()))
     for i, r in enumerate(sorted(set(ratio.tolist()))):
         for j, t in enumerate(tensions):
             curve = (ratio == r) & (tension == t)
@@ -208,7 +217,7 @@ def _steps_per_cycle(march: MarchResult) -> int:
     return int(len(loads) - 1 - earlier[-1])
 
 
-def _last_cycle(frame: pd.DataFrame, march: MarchResult) -> Tuple[Floats, Floats, Floats]:
+def _last_cycle(frame: pd.DataFrame, march: MarchResult) -> tuple[Floats, Floats, Floats]:
     """(t, left, right) of the largest stick interval at each increment of the march's last
     cycle, t = 2k/K at its k-th of K increments; ValueError unless it ends at frame's point 1."""
     per_cycle = _steps_per_cycle(march)
@@ -229,10 +238,10 @@ def _last_cycle(frame: pd.DataFrame, march: MarchResult) -> Tuple[Floats, Floats
 
 def evolution(
     frame: pd.DataFrame,
-    march: Optional[MarchResult] = None,
+    march: MarchResult | None = None,
     *,
-    units: Optional[Mapping[str, str]] = None,
-    axes: Optional[Sequence[Axes]] = None,
+    units: Mapping[str, str] | None = None,
+    axes: Sequence[Axes] | None = None,
 ) -> Figure:
     """The contact and stick zone over a cycle in the style of the paper's Figure 6, as
     ``halfplane plot evolution``: the contact edge, the exact stick boundary and the asymptotic
@@ -277,7 +286,7 @@ def evolution(
     return fig
 
 
-def _chosen_steps(march: MarchResult, steps: Optional[Sequence[int]]) -> List[int]:
+def _chosen_steps(march: MarchResult, steps: Sequence[int] | None) -> list[int]:
     """The increments march_fields draws: as given, or the quarters of the last cycle (the
     command's default), or the last increment of a history without cycles."""
     count = march.increments
@@ -299,11 +308,11 @@ def _chosen_steps(march: MarchResult, steps: Optional[Sequence[int]]) -> List[in
 
 def march_fields(
     march: MarchResult,
-    steps: Optional[Sequence[int]] = None,
+    steps: Sequence[int] | None = None,
     *,
-    friction: Optional[float] = None,
-    units: Optional[Mapping[str, str]] = None,
-    axes: Optional[Sequence[Axes]] = None,
+    friction: float | None = None,
+    units: Mapping[str, str] | None = None,
+    axes: Sequence[Axes] | None = None,
 ) -> Figure:
     """The shear traction q and the accumulated slip along x at chosen increments of a march,
     as ``halfplane plot march-fields`` (q positive in +x, slip positive in the sense positive Q

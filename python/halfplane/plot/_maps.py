@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import importlib
 import math
-from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence, Tuple
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -30,7 +31,7 @@ if TYPE_CHECKING:
 _COMPONENTS = {"sxx": "σxx", "szz": "σzz", "syy": "σyy", "sxz": "σxz"}
 
 
-def _grid(x: npt.ArrayLike, z: npt.ArrayLike, shape: Tuple[int, ...]) -> Tuple[Floats, Floats]:
+def _grid(x: npt.ArrayLike, z: npt.ArrayLike, shape: tuple[int, ...]) -> tuple[Floats, Floats]:
     """x and z as 2-D arrays of ``shape`` (nz, nx): given so, or as the 1-D axes of that grid."""
     xs = np.asarray(x, dtype=np.float64)
     zs = np.asarray(z, dtype=np.float64)
@@ -98,8 +99,8 @@ def stress_map(
     component: str = "sxx",
     *,
     levels: int = 14,
-    units: Optional[Mapping[str, str]] = None,
-    ax: Optional[Axes] = None,
+    units: Mapping[str, str] | None = None,
+    ax: Axes | None = None,
 ) -> Axes:
     """Filled contours of one stress component below the contact, as ``halfplane plot
     stress-map``: ``component`` is ``"sxx"``, ``"szz"``, ``"syy"`` or ``"sxz"`` (tension
@@ -153,7 +154,7 @@ def stress_map(
 _STRESS_PARAMETERS = {"findley", "crossland", "mwcm", "mcdiarmid", "ruiz_f2"}
 
 
-def _fatigue_rows(result: FatigueResult, parameters: Optional[Sequence[str]]) -> pd.DataFrame:
+def _fatigue_rows(result: FatigueResult, parameters: Sequence[str] | None) -> pd.DataFrame:
     table = result.parameters
     if parameters is not None:
         unknown = [p for p in parameters if p not in set(table["parameter"])]
@@ -171,11 +172,11 @@ def _fatigue_rows(result: FatigueResult, parameters: Optional[Sequence[str]]) ->
 
 def fatigue_map(
     result: FatigueResult,
-    parameters: Optional[Sequence[str]] = None,
+    parameters: Sequence[str] | None = None,
     *,
-    half_width: Optional[float] = None,
-    units: Optional[Mapping[str, str]] = None,
-    ax: Optional[Axes] = None,
+    half_width: float | None = None,
+    units: Mapping[str, str] | None = None,
+    ax: Axes | None = None,
 ) -> Axes:
     """Where each fatigue parameter peaks over the steady cycle, in the x-z plane below the
     contact (equal scales, depth downwards): the place of each maximum (a star; parameters
@@ -276,7 +277,7 @@ _NAMES = {
 _SECTIONS = ("friction.", "material.", "profile.", "solver.", "history.")
 
 
-def _describe(column: str, units: Tuple[str, str, str]) -> str:
+def _describe(column: str, units: tuple[str, str, str]) -> str:
     """A readable name with its unit for a column of a batch or sweep table (``normal1`` and the
     sweep path ``cycle.point1.normal`` both read "normal load P at point 1 (N/mm)"); other
     columns keep their name."""
@@ -346,7 +347,7 @@ def _select(frame: pd.DataFrame, x: str, y: str, where: Mapping[str, float]) -> 
     return rows
 
 
-def _regime_codes(rows: pd.DataFrame) -> Tuple[Floats, np.ndarray]:
+def _regime_codes(rows: pd.DataFrame) -> tuple[Floats, np.ndarray]:
     regime = rows["regime"].fillna("").astype(str).to_numpy()
     if "error" in rows.columns:
         failed = rows["error"].fillna("").astype(str).to_numpy() != ""
@@ -363,9 +364,9 @@ def design_map(
     y: str,
     color: str = "regime",
     *,
-    where: Optional[Mapping[str, float]] = None,
-    units: Optional[Mapping[str, str]] = None,
-    ax: Optional[Axes] = None,
+    where: Mapping[str, float] | None = None,
+    units: Mapping[str, str] | None = None,
+    ax: Axes | None = None,
 ) -> Axes:
     """A design map of many cases over two of their inputs, as ``halfplane plot design-map``:
     the regime of each case (``color="regime"``, with rows whose analysis failed in grey) or any
