@@ -47,7 +47,7 @@ nitpicky = True
 myst_heading_anchors = 3
 # Types of other libraries named in signatures: the build has no network for their inventories.
 nitpick_ignore_regex = [
-    (r"py:.*", r"(pandas|pd|numpy|np|npt|matplotlib|os|typing_extensions)\..*"),
+    (r"py:.*", r"(pandas|pd|numpy|np|npt|matplotlib|os|typing|typing_extensions|collections\.abc)\..*"),
     (r"py:class", r"(Axes|Figure|Floats|PathLike|ArrayLike|NDArray|DataFrame|ndarray)"),
     (r"py:class", r"halfplane\._halfplane\.Case"),
     (r"py:class", r"optional"),
