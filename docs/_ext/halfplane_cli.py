@@ -40,7 +40,7 @@ def help_text(args: list[str]) -> str:
         capture_output=True,
         text=True,
         check=False,
-        env={**os.environ, "COLUMNS": "100"},
+        env={**os.environ, "COLUMNS": "86"},  # the width of furo's code blocks
     )
     if done.returncode != 0:
         raise ExtensionError(f"halfplane {' '.join(args)} --help failed: {done.stderr}")
