@@ -56,7 +56,7 @@ impl StressConfig {
                     lines,
                 };
                 for i in 0..x.len() {
-                    stress::check_point(i, x[i], z[i])
+                    stress::check_points(&x[i..=i], &z[i..=i])
                         .map_err(|e| point_error(&origin.name(i), &e))?;
                 }
                 (x, z, origin)
