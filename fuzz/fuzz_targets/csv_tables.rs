@@ -4,7 +4,8 @@
 //! that loads is marched on 16 cells when short.
 #![no_main]
 
-use halfplane::{analyse, Cycle, LoadPoint, SteadyOptions};
+use halfplane::steady::analyse;
+use halfplane::{Cycle, LoadPoint, SteadyOptions};
 use halfplane_fuzz::{check_case, check_half_width, check_steady};
 use libfuzzer_sys::fuzz_target;
 use std::sync::OnceLock;

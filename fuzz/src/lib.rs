@@ -328,7 +328,8 @@ pub fn files_are_contained(text: &str, dir: &Path) -> bool {
 /// description and a 3-point evolution of its cycle, and the finiteness of its history. Marches
 /// only short histories, on at most `max_cells` cells, so each run stays fast.
 pub fn check_case(case: &halfplane_cli::case::Case, max_rows: usize, max_cells: usize) {
-    use halfplane::{analyse, asymptotic, evolution, march, SteadyOptions};
+    use halfplane::steady::analyse;
+    use halfplane::{asymptotic, evolution, march, SteadyOptions};
     check_contact(&case.contact);
     if let Some(cycle) = case.cycle {
         let options = SteadyOptions::default();

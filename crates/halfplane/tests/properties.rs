@@ -20,9 +20,10 @@
 //!
 //! 1024 cases per property: the whole file takes about 0.6 s in the debug profile (budget ~5 s).
 
+use halfplane::steady::analyse;
 use halfplane::{
-    analyse, asymptotic, evolution, Contact, Cycle, Error, Friction, GivenPoint, LoadPoint,
-    Material, Profile, Regime, SteadyOptions, SteadyState,
+    asymptotic, evolution, Contact, Cycle, Error, Friction, GivenPoint, LoadPoint, Material,
+    Profile, Regime, SteadyOptions, SteadyState,
 };
 use proptest::prelude::*;
 

@@ -14,10 +14,7 @@ fn implicit(c: &Contact, cycle: &Cycle) -> halfplane::SteadyState {
     steady::analyse(
         c,
         cycle,
-        &SteadyOptions {
-            method: Method::Implicit,
-            ..Default::default()
-        },
+        &SteadyOptions::default().with_method(Method::Implicit),
     )
     .unwrap()
 }
@@ -309,31 +306,40 @@ fn hertz_closed_form_module_is_the_papers_formula() {
 }
 
 #[test]
-fn a_segment_that_would_slide_has_no_stick_zone() {
-    // dQ >= f (P1 + P2): no stick zone exists; the public solver says so by name.
-    let segment = steady::Segment {
-        normal_sum: 2000.0,
-        shear_range: 1300.0,
-        bulk_range: 0.0,
-    };
-    for method in [Method::Auto, Method::Implicit] {
-        let options = SteadyOptions {
-            method,
-            ..Default::default()
-        };
-        for profile in [
-            Profile::hertz(RADIUS).unwrap(),
-            Profile::flat_rounded(0.3, RADIUS).unwrap(),
-        ] {
-            let err = steady::stick_zone(&contact(profile), &segment, None, &options).unwrap_err();
-            assert_eq!(
-                err,
-                Error::NoStickZone {
-                    shear_range: 1300.0,
-                    limit: 0.6 * 2000.0
-                },
-                "{err}"
-            );
+fn steady_options_refuse_values_outside_their_ranges() {
+    // Options are valid by construction, like MarchOptions: before, any tolerance (NaN, 0,
+    // negative) and 0 iterations could be written into public fields.
+    for t in [0.0, -1e-12, 1e-17, 1.0, f64::NAN, f64::INFINITY] {
+        match SteadyOptions::default().with_tolerance(t) {
+            Err(Error::InvalidInput { field, .. }) => assert_eq!(field, "steady.tolerance"),
+            other => panic!("tolerance {t} accepted: {other:?}"),
         }
+    }
+    for n in [0, SteadyOptions::MAX_ITERATIONS + 1] {
+        match SteadyOptions::default().with_max_iterations(n) {
+            Err(Error::InvalidCount {
+                field, min, max, ..
+            }) => assert_eq!(
+                (field.as_str(), min, max),
+                ("steady.max_iterations", 1, SteadyOptions::MAX_ITERATIONS as u64)
+            ),
+            other => panic!("{n} iterations accepted: {other:?}"),
+        }
+    }
+    let options = SteadyOptions::default()
+        .with_method(Method::Implicit)
+        .with_tolerance(1e-10)
+        .and_then(|o| o.with_max_iterations(1))
+        .expect("valid");
+    assert_eq!(
+        (options.method(), options.tolerance(), options.max_iterations()),
+        (Method::Implicit, 1e-10, 1)
+    );
+    // One Newton step from the symmetric start does not reach 1e-10 on a tensioned cycle: the
+    // cap is honoured and named.
+    let c = contact(Profile::flat_rounded(0.3, RADIUS).unwrap());
+    match steady::analyse(&c, &theory_cycle(), &options) {
+        Err(Error::NoConvergence { iterations, .. }) => assert_eq!(iterations, 1),
+        other => panic!("{other:?}"),
     }
 }
