@@ -40,7 +40,7 @@ fuzz_target!(|data: &[u8]| {
         check_case(&case, 0, 8);
         let contact = &case.contact;
         // A cycle inside the table: loads at 30% and 50% of the load that fills it.
-        let end = contact.profile.extent();
+        let end = contact.profile().extent();
         let Ok(p_max) = contact.load(0.9 * end) else {
             return;
         };
@@ -58,7 +58,7 @@ fuzz_target!(|data: &[u8]| {
                 }
             }
         }
-        let f = contact.friction.value();
+        let f = contact.friction().value();
         let (p1, p2) = (0.3 * p_max, 0.5 * p_max);
         let (Ok(first), Ok(second)) = (
             LoadPoint::new("first", p1, -0.4 * f * p1, -0.01 * p1 / end),

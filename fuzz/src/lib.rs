@@ -160,9 +160,9 @@ pub fn check_half_width(a: f64, context: &dyn std::fmt::Debug) {
 
 /// The validated parts of a contact are finite, and so is the compliance derived from them.
 pub fn check_contact(c: &Contact) {
-    finite("E", c.material.youngs_modulus(), c);
-    finite("nu", c.material.poisson_ratio(), c);
-    finite("f", c.friction.value(), c);
+    finite("E", c.material().youngs_modulus(), c);
+    finite("nu", c.material().poisson_ratio(), c);
+    finite("f", c.friction().value(), c);
     let a = c.compliance().value();
     assert!(
         a.is_finite() && a > 0.0,
@@ -204,7 +204,7 @@ pub fn check_steady(s: &SteadyState) {
 /// True when `|Q| < f P` at both ends (FINDINGS.md F6, fixed: `asymptotic::steady` now returns
 /// `GrossSliding` otherwise).
 pub fn sticks_at_both_ends(contact: &Contact, cycle: &halfplane::Cycle) -> bool {
-    let f = contact.friction.value();
+    let f = contact.friction().value();
     [cycle.low(), cycle.high()]
         .iter()
         .all(|p| p.shear().abs() < f * p.normal())

@@ -96,7 +96,7 @@ fn case() -> impl Strategy<Value = Case> {
     )
         .prop_map(|(contact, p1, ratio, u1, u2, t1, t2)| {
             let p2 = (p1 * 10f64.powf(ratio)).clamp(1.0, 1e4);
-            let f = contact.friction.value();
+            let f = contact.friction().value();
             // |u| < 1 strictly, so |Q| < f P.
             let (q1, q2) = (u1 * f * p1, u2 * f * p2);
             // Bulk tension up to 1.2 times the range with pi a_max |dsigma|/4 = dQ.

@@ -86,7 +86,7 @@ fn stick_zone_does_not_depend_on_the_order_of_the_points() {
         let a = solve(&c, &Cycle::new(p1, p2));
         let b = solve(&c, &Cycle::new(p2, p1));
         assert!(b.cycle.swapped());
-        assert_eq!(zone(&a), zone(&b), "{:?}", c.profile.shape());
+        assert_eq!(zone(&a), zone(&b), "{:?}", c.profile().shape());
         let (sa, sb) = (a.slip_zones.unwrap(), b.slip_zones.unwrap());
         assert_eq!(
             sa.right.first, sb.right.second,
@@ -116,7 +116,7 @@ fn constant_normal_load_and_tension_reduce_to_p_k() {
         assert!(
             rel(z.half_width(), a_k) < 1e-12,
             "{:?}: d = {}, a(P_K) = {a_k}",
-            c.profile.shape(),
+            c.profile().shape(),
             z.half_width()
         );
         assert!(
@@ -143,7 +143,7 @@ fn reversing_the_tension_range_mirrors_the_stick_zone() {
         assert!(
             (ml + r).abs() < 1e-12 && (mr + l).abs() < 1e-12,
             "{:?}: [{l}, {r}] vs mirrored [{ml}, {mr}]",
-            c.profile.shape()
+            c.profile().shape()
         );
         assert!(
             r + l > 1e-4,
@@ -321,7 +321,11 @@ fn steady_options_refuse_values_outside_their_ranges() {
                 field, min, max, ..
             }) => assert_eq!(
                 (field.as_str(), min, max),
-                ("steady.max_iterations", 1, SteadyOptions::MAX_ITERATIONS as u64)
+                (
+                    "steady.max_iterations",
+                    1,
+                    SteadyOptions::MAX_ITERATIONS as u64
+                )
             ),
             other => panic!("{n} iterations accepted: {other:?}"),
         }
@@ -332,7 +336,11 @@ fn steady_options_refuse_values_outside_their_ranges() {
         .and_then(|o| o.with_max_iterations(1))
         .expect("valid");
     assert_eq!(
-        (options.method(), options.tolerance(), options.max_iterations()),
+        (
+            options.method(),
+            options.tolerance(),
+            options.max_iterations()
+        ),
         (Method::Implicit, 1e-10, 1)
     );
     // One Newton step from the symmetric start does not reach 1e-10 on a tensioned cycle: the

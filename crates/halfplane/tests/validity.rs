@@ -43,7 +43,7 @@ fn march_cycle(
     let history = History::in_phase(p1, p2, 2, steps, Ramp::NormalFirst, 10).unwrap();
     // The solver's own threshold for "slipping" (MarchOptions::slip_tolerance, default 1e-10 A f P).
     let threshold =
-        1e-10 * c.compliance().value() * c.friction.value() * p1.normal().max(p2.normal());
+        1e-10 * c.compliance().value() * c.friction().value() * p1.normal().max(p2.normal());
     let mut forward = Vec::new();
     let r = march(
         c,
@@ -259,14 +259,14 @@ fn evolve_never_warns_for_a_cycle_that_analyse_accepts() {
                         assert!(
                             ev.warnings.is_empty(),
                             "{:?}, P2 {p2}, sigma +-{s}: {:?}",
-                            c.profile.shape(),
+                            c.profile().shape(),
                             ev.warnings
                         );
                         accepted += 1;
                     }
                     Err(Error::SlipReversesInHalf { .. })
                     | Err(Error::StickZoneOutsideContact { .. }) => rejected += 1,
-                    Err(e) => panic!("{:?}, P2 {p2}, sigma +-{s}: {e}", c.profile.shape()),
+                    Err(e) => panic!("{:?}, P2 {p2}, sigma +-{s}: {e}", c.profile().shape()),
                 }
             }
         }

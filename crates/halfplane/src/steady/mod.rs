@@ -40,6 +40,12 @@ pub enum Method {
 /// assert!(SteadyOptions::default().with_max_iterations(0).is_err());
 /// # Ok::<(), halfplane::Error>(())
 /// ```
+///
+/// No value skips the checks:
+///
+/// ```compile_fail,E0451
+/// let options = halfplane::SteadyOptions { max_iterations: 0, ..Default::default() };
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyOptions {
     method: Method,
