@@ -9,7 +9,7 @@ use halfplane::Error;
 use pyo3::exceptions::{PyBaseException, PyFileNotFoundError, PyOSError};
 use pyo3::prelude::*;
 
-/// The library's kind of an error decides its Python class (see [`class_name`]).
+/// The library's kind of an error decides its Python class (see `class_name`).
 pub use halfplane::error::ErrorKind as Kind;
 
 /// The class in `halfplane.errors` that errors of `kind` become: `InputError(HalfplaneError,
