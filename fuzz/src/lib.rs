@@ -167,7 +167,7 @@ pub fn check_contact(c: &Contact) {
     assert!(
         a.is_finite() && a > 0.0,
         "compliance A = {a} is not finite and > 0 for {:?}",
-        c.material
+        c.material()
     );
 }
 

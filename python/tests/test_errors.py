@@ -6,8 +6,6 @@ and turned into exceptions by the same code as any error.
 
 from __future__ import annotations
 
-from typing import List, Tuple, cast
-
 import halfplane
 from halfplane import _halfplane, errors
 
@@ -18,14 +16,8 @@ CLASS_OF_KIND = {
 }
 
 
-def examples() -> List[Tuple[str, str, BaseException]]:
-    """(name, kind, exception) of every variant; private, so not in the stubs."""
-    made = getattr(_halfplane, "_error_examples")()
-    return cast(List[Tuple[str, str, BaseException]], made)
-
-
 def test_every_variant_has_its_own_name_and_the_class_of_its_kind() -> None:
-    examples = examples()
+    examples = _halfplane._error_examples()
     names = [name for name, _, _ in examples]
     assert len(names) >= 30
     assert len(set(names)) == len(names), "names are unique"
@@ -40,7 +32,7 @@ def test_every_variant_has_its_own_name_and_the_class_of_its_kind() -> None:
 
 
 def test_matching_errors_are_not_input_errors() -> None:
-    kinds = {name: kind for name, kind, _ in examples()}
+    kinds = {name: kind for name, kind, _ in _halfplane._error_examples()}
     assert kinds["NoValidMatch"] == "outside-analysis"
     assert kinds["MatchNotBracketed"] == "outside-analysis"
     for name in ["MomentOutsideTable", "OutsideProfile", "InvalidRange", "UnequalColumns",
@@ -51,7 +43,7 @@ def test_matching_errors_are_not_input_errors() -> None:
 def test_cycles_the_march_covers_point_to_it() -> None:
     hinted = {
         name
-        for name, _, exception in examples()
+        for name, _, exception in _halfplane._error_examples()
         if "halfplane.march" in str(exception)
     }
     assert hinted == {"SlipReversesInHalf", "StickZoneOutsideContact"}
