@@ -4,7 +4,8 @@
 //! that loads is marched on 16 cells when short.
 #![no_main]
 
-use halfplane::{analyse, Cycle, LoadPoint, SteadyOptions};
+use halfplane::steady::analyse;
+use halfplane::{Cycle, LoadPoint, SteadyOptions};
 use halfplane_fuzz::{check_case, check_half_width, check_steady};
 use libfuzzer_sys::fuzz_target;
 use std::sync::OnceLock;
@@ -39,7 +40,7 @@ fuzz_target!(|data: &[u8]| {
         check_case(&case, 0, 8);
         let contact = &case.contact;
         // A cycle inside the table: loads at 30% and 50% of the load that fills it.
-        let end = contact.profile.extent();
+        let end = contact.profile().extent();
         let Ok(p_max) = contact.load(0.9 * end) else {
             return;
         };
@@ -57,7 +58,7 @@ fuzz_target!(|data: &[u8]| {
                 }
             }
         }
-        let f = contact.friction.value();
+        let f = contact.friction().value();
         let (p1, p2) = (0.3 * p_max, 0.5 * p_max);
         let (Ok(first), Ok(second)) = (
             LoadPoint::new("first", p1, -0.4 * f * p1, -0.01 * p1 / end),

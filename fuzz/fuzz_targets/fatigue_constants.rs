@@ -147,7 +147,7 @@ fuzz_target!(|input: Input| {
     }) {
         return;
     }
-    let m = case.contact.material;
+    let m = case.contact.material();
     let n = history.len();
     for planes in [Planes::InPlane, Planes::Full3d] {
         let p = fatigue::critical_planes_over(&history, &m, &settings.constants, planes);

@@ -5,7 +5,8 @@
 
 use arbitrary::Arbitrary;
 use halfplane::steady::Method;
-use halfplane::{analyse, asymptotic, evolution, Cycle, LoadPoint, SteadyOptions};
+use halfplane::steady::analyse;
+use halfplane::{asymptotic, evolution, Cycle, LoadPoint, SteadyOptions};
 use halfplane_fuzz::{
     check_asymptotic, check_evolution, check_half_width, check_steady, fuzzed_contact,
     sticks_at_both_ends, Num, ProfileInput,
@@ -70,14 +71,11 @@ fuzz_target!(|input: Input| {
         return;
     };
     let cycle = Cycle::new(first, second);
-    let options = SteadyOptions {
-        method: if input.implicit {
-            Method::Implicit
-        } else {
-            Method::Auto
-        },
-        ..SteadyOptions::default()
-    };
+    let options = SteadyOptions::default().with_method(if input.implicit {
+        Method::Implicit
+    } else {
+        Method::Auto
+    });
     if let Ok(s) = analyse(&contact, &cycle, &options) {
         check_steady(&s);
     }

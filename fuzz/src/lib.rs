@@ -160,14 +160,14 @@ pub fn check_half_width(a: f64, context: &dyn std::fmt::Debug) {
 
 /// The validated parts of a contact are finite, and so is the compliance derived from them.
 pub fn check_contact(c: &Contact) {
-    finite("E", c.material.youngs_modulus(), c);
-    finite("nu", c.material.poisson_ratio(), c);
-    finite("f", c.friction.value(), c);
+    finite("E", c.material().youngs_modulus(), c);
+    finite("nu", c.material().poisson_ratio(), c);
+    finite("f", c.friction().value(), c);
     let a = c.compliance().value();
     assert!(
         a.is_finite() && a > 0.0,
         "compliance A = {a} is not finite and > 0 for {:?}",
-        c.material
+        c.material()
     );
 }
 
@@ -204,7 +204,7 @@ pub fn check_steady(s: &SteadyState) {
 /// True when `|Q| < f P` at both ends (FINDINGS.md F6, fixed: `asymptotic::steady` now returns
 /// `GrossSliding` otherwise).
 pub fn sticks_at_both_ends(contact: &Contact, cycle: &halfplane::Cycle) -> bool {
-    let f = contact.friction.value();
+    let f = contact.friction().value();
     [cycle.low(), cycle.high()]
         .iter()
         .all(|p| p.shear().abs() < f * p.normal())
@@ -328,7 +328,8 @@ pub fn files_are_contained(text: &str, dir: &Path) -> bool {
 /// description and a 3-point evolution of its cycle, and the finiteness of its history. Marches
 /// only short histories, on at most `max_cells` cells, so each run stays fast.
 pub fn check_case(case: &halfplane_cli::case::Case, max_rows: usize, max_cells: usize) {
-    use halfplane::{analyse, asymptotic, evolution, march, SteadyOptions};
+    use halfplane::steady::analyse;
+    use halfplane::{asymptotic, evolution, march, SteadyOptions};
     check_contact(&case.contact);
     if let Some(cycle) = case.cycle {
         let options = SteadyOptions::default();

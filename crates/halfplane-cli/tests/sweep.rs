@@ -606,3 +606,48 @@ fn design_map_refuses_text_colours_and_says_what_it_draws_without_a_value() {
         stderr(&o)
     );
 }
+
+/// The command reads `HALFPLANE_NUM_THREADS` itself (the library no longer does) and refuses a bad
+/// value with the error it gave before, exit 2; `--threads` takes precedence over it.
+#[test]
+fn the_threads_variable_is_read_by_the_command() {
+    let dir = scratch("sweep-threads-variable");
+    let spec_path = dir.join("spec.toml");
+    let spec = format!(
+        "{REFERENCE_CASE}[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"friction.coefficient\" = [0.5, 0.6]\n"
+    );
+    std::fs::write(&spec_path, spec).unwrap();
+    let out = dir.join("out.csv");
+    let sweep_with = |value: &str, extra: &[&str]| {
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_halfplane"));
+        command
+            .args([
+                "sweep",
+                spec_path.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ])
+            .args(extra)
+            .env("HALFPLANE_NUM_THREADS", value);
+        command.output().expect("run halfplane")
+    };
+    for (value, expected) in [
+        (
+            "lots",
+            "invalid HALFPLANE_NUM_THREADS = \"lots\": must be a whole number of threads from 1 to 4096",
+        ),
+        (
+            "0",
+            "invalid HALFPLANE_NUM_THREADS = 0: must be a whole number from 1 to 4096",
+        ),
+    ] {
+        let o = sweep_with(value, &[]);
+        assert_eq!(o.status.code(), Some(2), "{value}: {}", stderr(&o));
+        assert!(stderr(&o).contains(expected), "{value}: {}", stderr(&o));
+    }
+    let o = sweep_with("lots", &["--threads", "2"]);
+    assert!(o.status.success(), "--threads wins: {}", stderr(&o));
+    let o = sweep_with("1", &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(rows(&std::fs::read_to_string(&out).unwrap()).len(), 3);
+}

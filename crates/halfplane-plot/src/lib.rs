@@ -92,7 +92,7 @@ pub fn load_space_figure(
     units: &Units,
 ) -> Result<Figure, PlotError> {
     let force = &units.force_per_length;
-    let f = contact.friction.value();
+    let f = contact.friction().value();
     let (p1, p2) = cycle.as_given();
     let p_max = 1.15 * p1.normal().max(p2.normal());
     let friction_lines = |color| {

@@ -16,7 +16,7 @@ pub fn match_figure(report: &MatchReport, units: &Units) -> Result<Figure, PlotE
     let force = &units.force_per_length;
     let panel = |name: &str, side: &Side| -> Result<Panel, PlotError> {
         let contact = &side.contact;
-        let f = contact.friction.value();
+        let f = contact.friction().value();
         let (p1, p2) = side.cycle.as_given();
         let p_max = 1.15 * p1.normal().max(p2.normal());
         let mut series = vec![
@@ -71,7 +71,7 @@ pub fn match_figure(report: &MatchReport, units: &Units) -> Result<Figure, PlotE
 }
 
 fn kind(side: &Side) -> &'static str {
-    match side.contact.profile.shape() {
+    match side.contact.profile().shape() {
         halfplane::Shape::Hertz { .. } => "Hertz",
         halfplane::Shape::FlatRounded { .. } => "flat, rounded edges",
         halfplane::Shape::PowerLaw { .. } => "power law",

@@ -5,7 +5,7 @@
 
 use crate::errors;
 use halfplane::batch::{
-    Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_COLUMNS, STEADY_INPUT_COLUMNS,
+    self, Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_COLUMNS, STEADY_INPUT_COLUMNS,
 };
 use halfplane::{Error, Regime, SteadyOptions};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
@@ -59,8 +59,9 @@ fn number_columns(values: &mut [f64], rows: usize) -> [&mut [f64]; NUMBER_COUNT]
 }
 
 /// Solves the rows of the columns (in the order of `numeric_columns`; `None` for an absent profile
-/// parameter) with profile `profile_names[profile_index[i]]` (-1: missing), on `threads` workers,
-/// each worker writing its own rows of the output.
+/// parameter) with profile `profile_names[profile_index[i]]` (-1: missing), on `threads` workers
+/// (`None`: `HALFPLANE_NUM_THREADS` if set, else every core), each worker writing its own rows of
+/// the output.
 #[pyfunction]
 #[pyo3(signature = (columns, profile_index, profile_names, threads=None))]
 pub fn steady_batch_columns<'py>(
@@ -88,10 +89,13 @@ pub fn steady_batch_columns<'py>(
                     .as_slice()
                     .map_err(|e| PyValueError::new_err(format!("column {name:?}: {e}")))?;
                 if s.len() != rows {
-                    return Err(PyValueError::new_err(format!(
-                        "column {name:?} has {} rows, the profile column {rows}",
-                        s.len()
-                    )));
+                    let mismatch = Error::LengthMismatch {
+                        field: format!("column {name:?}"),
+                        length: s.len(),
+                        expected: rows,
+                        per: "one value per row of the profile column",
+                    };
+                    return Err(errors::from_library(py, &mismatch));
                 }
                 Some(s)
             }
@@ -103,6 +107,14 @@ pub fn steady_batch_columns<'py>(
         .iter()
         .map(|n| ProfileKind::from_name(n))
         .collect();
+    let threads = match threads {
+        Some(n) => Some(n),
+        None => {
+            let value = std::env::var_os(batch::THREADS_VARIABLE).unwrap_or_default();
+            batch::threads_from_text(&value.to_string_lossy())
+                .map_err(|e| errors::from_library(py, &e))?
+        }
+    };
     let batch = Batch::new(threads).map_err(|e| errors::from_library(py, &e))?;
     let options = SteadyOptions::default();
     let value = |column: usize, row: usize| slices[column].map_or(f64::NAN, |s| s[row]);

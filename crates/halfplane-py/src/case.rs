@@ -342,25 +342,25 @@ impl PyCase {
     /// The profile kind: "hertz", "flat-rounded", "power-law" or "tabulated".
     #[getter]
     fn profile(&self) -> &'static str {
-        kind(self.case.contact.profile.shape())
+        kind(self.case.contact.profile().shape())
     }
 
     /// Young's modulus E of both bodies (stress unit, MPa by default).
     #[getter]
     fn youngs_modulus(&self) -> f64 {
-        self.case.contact.material.youngs_modulus()
+        self.case.contact.material().youngs_modulus()
     }
 
     /// Poisson's ratio of both bodies.
     #[getter]
     fn poisson_ratio(&self) -> f64 {
-        self.case.contact.material.poisson_ratio()
+        self.case.contact.material().poisson_ratio()
     }
 
     /// The Coulomb friction coefficient f.
     #[getter]
     fn friction(&self) -> f64 {
-        self.case.contact.friction.value()
+        self.case.contact.friction().value()
     }
 
     /// The composite compliance A = 4(1 - nu^2)/E.
@@ -396,8 +396,8 @@ impl PyCase {
 
     fn __repr__(&self) -> String {
         let c = &self.case.contact;
-        let mut o = format!("Case(profile={:?}", kind(c.profile.shape()));
-        match c.profile.shape() {
+        let mut o = format!("Case(profile={:?}", kind(c.profile().shape()));
+        match c.profile().shape() {
             Shape::Hertz { radius } => {
                 let _ = write!(o, ", radius={radius:?}");
             }
@@ -423,9 +423,9 @@ impl PyCase {
         let _ = write!(
             o,
             ", youngs_modulus={:?}, poisson_ratio={:?}, friction={:?}",
-            c.material.youngs_modulus(),
-            c.material.poisson_ratio(),
-            c.friction.value()
+            c.material().youngs_modulus(),
+            c.material().poisson_ratio(),
+            c.friction().value()
         );
         if let Some(cycle) = self.case.cycle {
             let (a, b) = cycle.as_given();

@@ -38,9 +38,7 @@ pub fn stress_points<'py>(
             stress_command::MAX_POINTS
         )));
     }
-    for (i, (&xi, &zi)) in x.iter().zip(&z).enumerate() {
-        halfplane::stress::check_point(i, xi, zi).map_err(|e| errors::from_library(py, &e))?;
-    }
+    halfplane::stress::check_points(&x, &z).map_err(|e| errors::from_library(py, &e))?;
     let history = case.history().map_err(input)?;
     let options = case
         .solver_with_cells_named(cells, "cells")

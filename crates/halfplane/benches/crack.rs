@@ -41,12 +41,18 @@ fn one_length_120_increments(b: divan::Bencher, friction: f64) {
     let a = kept[0].half_width;
     let c = crack::Crack::new(-a, 0.0, 0.05).unwrap();
     b.bench(|| {
-        let s = CrackSolver::new(&c, &contact.material, 40).unwrap();
+        let s = CrackSolver::new(&c, &contact.material(), 40).unwrap();
         let loads: Vec<(Vec<f64>, Vec<f64>)> = kept
             .iter()
             .map(|k| {
-                let f = stress::field(&k.traction, k.load.bulk(), &contact.material, s.x(), s.z())
-                    .unwrap();
+                let f = stress::field(
+                    &k.traction,
+                    k.load.bulk(),
+                    &contact.material(),
+                    s.x(),
+                    s.z(),
+                )
+                .unwrap();
                 (0..f.len())
                     .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
                     .unzip()

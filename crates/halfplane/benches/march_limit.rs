@@ -33,7 +33,7 @@ fn march_cycle(b: divan::Bencher, cells: usize) {
 
 #[divan::bench(args = [400, 1600, 6400, 12800, 25600], sample_count = 3, sample_size = 1)]
 fn cattaneo_two_increments(b: divan::Bencher, cells: usize) {
-    let f = reference::hertz().friction.value();
+    let f = reference::hertz().friction().value();
     let history =
         History::from_rows(&[[1000.0, 0.0, 0.0], [1000.0, 0.5 * f * 1000.0, 0.0]]).unwrap();
     b.bench(|| run(&history, cells));

@@ -25,10 +25,7 @@ fn hertz_closed_form(b: divan::Bencher) {
 #[divan::bench]
 fn hertz_implicit(b: divan::Bencher) {
     let c = reference::hertz();
-    let options = SteadyOptions {
-        method: Method::Implicit,
-        ..Default::default()
-    };
+    let options = SteadyOptions::default().with_method(Method::Implicit);
     b.bench(|| solve(&c, &options));
 }
 

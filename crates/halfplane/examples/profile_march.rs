@@ -18,7 +18,7 @@ fn main() {
         _ => reference::hertz(),
     };
     let history = if mode.as_deref() == Some("cattaneo") {
-        let f = contact.friction.value();
+        let f = contact.friction().value();
         History::from_rows(&[[1000.0, 0.0, 0.0], [1000.0, 0.5 * f * 1000.0, 0.0]]).unwrap()
     } else {
         let (p1, p2) = (reference::point1(), reference::point2());
@@ -48,7 +48,7 @@ fn main() {
         // Error against Cattaneo-Mindlin (Johnson, section 7.1): q = f (p(a) - p(c)).
         let last = r.steps.last().unwrap();
         let (a, w) = (last.half_width, r.x[1] - r.x[0]);
-        let f = contact.friction.value();
+        let f = contact.friction().value();
         let compliance = contact.compliance().value();
         let c = closed_form::cattaneo_mindlin_stick_half_width(a, f, 1000.0, 0.5 * f * 1000.0);
         let p = |b: f64, x: f64| closed_form::hertz_pressure(compliance, reference::RADIUS, b, x);

@@ -23,10 +23,7 @@ fn main() {
     };
     let contact = reference::contact(profile);
     let cycle = reference::cycle();
-    let options = SteadyOptions {
-        method,
-        ..Default::default()
-    };
+    let options = SteadyOptions::default().with_method(method);
     let mut sum = 0.0;
     for _ in 0..1000 {
         sum += steady::analyse(&contact, &cycle, &options)

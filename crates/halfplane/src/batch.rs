@@ -8,6 +8,11 @@
 //! the calling thread). Either way a caller's check between chunks (an interrupt, a full disk)
 //! may stop the run. A case that fails is a row carrying its error, never an abort of the batch. Results do
 //! not depend on the number of threads: every row is solved by the same sequential code.
+//!
+//! The library never reads the environment: a batch runs on the thread count its caller gives
+//! ([`Batch::new`]) or on the caller's own rayon pool ([`Batch::in_pool`]). Front ends that let
+//! users size the pool with [`THREADS_VARIABLE`] read it themselves and parse it with
+//! [`threads_from_text`], so every front end refuses a bad value with the same error.
 
 use crate::error::{Error, Result};
 use crate::history::{History, Steady};
@@ -17,13 +22,15 @@ use crate::steady::{self, Regime, SteadyOptions, SteadyState};
 use crate::{Contact, Cycle};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
+use std::sync::Arc;
 
 mod fill;
 pub mod row;
 pub use fill::RowBlock;
 pub use row::{ProfileKind, SteadyRow, STEADY_INPUT_COLUMNS};
 
-/// The environment variable that sizes the pool when no thread count is given.
+/// The environment variable the front ends (the CLI's `sweep`, Python's `steady_batch`) read for
+/// the thread count when none is given; parse its value with [`threads_from_text`].
 pub const THREADS_VARIABLE: &str = "HALFPLANE_NUM_THREADS";
 
 /// Rows solved between two calls of the sink when [`Batch::with_chunk_rows`] is not used: large
@@ -34,29 +41,46 @@ pub const DEFAULT_CHUNK_ROWS: usize = 16_384;
 /// Largest thread count accepted (far above any machine; it bounds the pool's allocation).
 pub const MAX_THREADS: usize = 4096;
 
-/// How a batch is run: the pool size and the chunk length.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// How a batch is run: who solves the rows, and the chunk length.
+#[derive(Debug, Clone)]
 pub struct Batch {
-    threads: Option<usize>,
+    workers: Workers,
     chunk_rows: usize,
 }
 
+/// Who solves a batch's rows.
+#[derive(Debug, Clone)]
+enum Workers {
+    /// A pool of this many threads started for each run (`None`: one per core).
+    Threads(Option<usize>),
+    /// The caller's pool.
+    Pool(Arc<rayon::ThreadPool>),
+}
+
 impl Batch {
-    /// A batch on `threads` workers, or, for `None`, on the count in [`THREADS_VARIABLE`] if it
-    /// is set, else on every core.
+    /// A batch on `threads` workers, or on every core for `None` (one thread solves the rows on
+    /// the calling thread, starting none).
     ///
     /// # Errors
-    /// [`Error::InvalidCount`] for a thread count (given or from the environment) outside
-    /// 1..=[`MAX_THREADS`], or an environment value that is not a whole number.
+    /// [`Error::InvalidCount`] for a thread count outside 1..=[`MAX_THREADS`].
     pub fn new(threads: Option<usize>) -> Result<Self> {
         let threads = match threads {
             Some(n) => Some(check_threads("threads", n as u64)?),
-            None => threads_from_environment()?,
+            None => None,
         };
         Ok(Self {
-            threads,
+            workers: Workers::Threads(threads),
             chunk_rows: DEFAULT_CHUNK_ROWS,
         })
+    }
+
+    /// A batch on the caller's rayon pool, shared with whatever else the caller runs there (no
+    /// pool is started per run).
+    pub fn in_pool(pool: Arc<rayon::ThreadPool>) -> Self {
+        Self {
+            workers: Workers::Pool(pool),
+            chunk_rows: DEFAULT_CHUNK_ROWS,
+        }
     }
 
     /// The same batch with `rows` rows per chunk (1 to 2^24).
@@ -79,9 +103,12 @@ impl Batch {
         })
     }
 
-    /// The thread count asked for (`None`: every core).
+    /// The thread count asked for (`None`: every core), or the caller's pool's.
     pub fn threads(&self) -> Option<usize> {
-        self.threads
+        match &self.workers {
+            Workers::Threads(n) => *n,
+            Workers::Pool(pool) => Some(pool.current_num_threads()),
+        }
     }
 
     /// Rows per chunk.
@@ -104,38 +131,45 @@ impl Batch {
     where
         O: Send,
     {
-        let pool = self.pool()?;
-        let mut first = 0;
-        while first < rows {
-            let end = rows.min(first.saturating_add(self.chunk_rows));
-            let results: Vec<O> = match &pool {
-                Some(pool) => pool.install(|| (first..end).into_par_iter().map(&solve).collect()),
-                None => (first..end).map(&solve).collect(),
-            };
-            if let ControlFlow::Break(value) = sink(first, results) {
-                return Ok(Some(value));
+        self.with_pool(|pool| {
+            let mut first = 0;
+            while first < rows {
+                let end = rows.min(first.saturating_add(self.chunk_rows));
+                let results: Vec<O> = match pool {
+                    Some(pool) => {
+                        pool.install(|| (first..end).into_par_iter().map(&solve).collect())
+                    }
+                    None => (first..end).map(&solve).collect(),
+                };
+                if let ControlFlow::Break(value) = sink(first, results) {
+                    return Some(value);
+                }
+                first = end;
             }
-            first = end;
-        }
-        Ok(None)
+            None
+        })
     }
 }
 
 impl Batch {
-    /// A pool of the batch's size, or `None` for one thread: the rows are then solved on the
-    /// calling thread, which saves starting a thread per call (milliseconds on a loaded machine,
-    /// paid per task by a Dask worker with one thread).
-    fn pool(&self) -> Result<Option<rayon::ThreadPool>> {
-        if self.threads == Some(1) {
-            return Ok(None);
-        }
-        let mut builder = rayon::ThreadPoolBuilder::new();
-        if let Some(n) = self.threads {
-            builder = builder.num_threads(n);
-        }
-        builder.build().map(Some).map_err(|e| Error::ThreadPool {
-            message: e.to_string(),
-        })
+    /// Runs `work` with the batch's pool: the caller's, a new one of the batch's size, or `None`
+    /// for one thread: the rows are then solved on the calling thread, which saves starting a
+    /// thread per call (milliseconds on a loaded machine, paid per task by a Dask worker with one
+    /// thread).
+    fn with_pool<T>(&self, work: impl FnOnce(Option<&rayon::ThreadPool>) -> T) -> Result<T> {
+        let threads = match &self.workers {
+            Workers::Pool(pool) => return Ok(work(Some(pool))),
+            Workers::Threads(Some(1)) => return Ok(work(None)),
+            Workers::Threads(Some(n)) => *n,
+            Workers::Threads(None) => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        };
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| Error::ThreadPool {
+                message: e.to_string(),
+            })?;
+        Ok(work(Some(&pool)))
     }
 }
 
@@ -151,15 +185,13 @@ fn check_threads(field: &str, n: u64) -> Result<usize> {
     Ok(n as usize)
 }
 
-fn threads_from_environment() -> Result<Option<usize>> {
-    match std::env::var_os(THREADS_VARIABLE) {
-        Some(text) => threads_from_text(&text.to_string_lossy()),
-        None => Ok(None),
-    }
-}
-
-/// Reads [`THREADS_VARIABLE`]'s value: blank means unset.
-fn threads_from_text(text: &str) -> Result<Option<usize>> {
+/// A thread count as [`THREADS_VARIABLE`] holds it: blank means not given (`None`, every core).
+/// Front ends pass the variable's value here (an unset variable is blank).
+///
+/// # Errors
+/// [`Error::InvalidText`] for text that is not a whole number, [`Error::InvalidCount`] for a
+/// count outside 1..=[`MAX_THREADS`]; both name [`THREADS_VARIABLE`].
+pub fn threads_from_text(text: &str) -> Result<Option<usize>> {
     let text = text.trim();
     if text.is_empty() {
         return Ok(None);

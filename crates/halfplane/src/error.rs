@@ -6,9 +6,18 @@ use crate::matching::{LoadIndex, MatchConstraint, MatchSide};
 use crate::written::Written;
 use thiserror::Error;
 
+mod examples;
+mod kind;
+pub use examples::one_of_each;
+pub use kind::{Alternative, ErrorKind};
+
 /// Everything that can go wrong in the library. Messages state the problem and what would be
-/// valid; they give no advice about any particular front end (the CLI adds its own hints by
-/// matching the variant). New variants may be added, so matches need a wildcard arm.
+/// valid; they give no advice about any particular front end. Each variant has a stable name
+/// ([`Error::name`]), a kind ([`Error::kind`]) and, where another route of this library may
+/// succeed, an [`Error::alternative`]: front ends classify errors and choose their hints from
+/// those (exhaustive matches written here, once), never by matching variants or reading
+/// messages. New variants may be added, so matches on the variants outside this crate need a
+/// wildcard arm.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum Error {
@@ -98,21 +107,6 @@ pub enum Error {
         needed: f64,
         /// Last tabulated x.
         table_end: f64,
-    },
-
-    /// The paper's end-point test `dQ > pi a_max |dsigma|/4` failed. No longer returned by
-    /// `steady::analyse`, whose along-the-half check ([`Error::SlipReversesInHalf`]) contains this
-    /// test as its special case `dP = 0` and is stricter otherwise; kept so that existing code that
-    /// matches on it still compiles.
-    #[error(
-        "slip reverses at one edge: the shear range dQ = {shear_range:.6} must exceed pi*a_max*|dsigma|/4 = {bulk_term:.6} \
-         for slip to keep one direction at both edges (the paper's assumption)"
-    )]
-    SlipReversal {
-        /// Q2 - Q1 with point 1 the end of smaller Q.
-        shear_range: f64,
-        /// pi * a_max * |sigma1 - sigma2| / 4.
-        bulk_term: f64,
     },
 
     /// Along a half-cycle, the slip zone at one edge stops growing: its stick boundary moves
@@ -317,6 +311,21 @@ pub enum Error {
         rows: usize,
         /// Rows of a column that differs from it.
         other: usize,
+    },
+
+    /// Two inputs that go together value by value have different lengths (depths and
+    /// positions of stress points, the values of a traction and its nodes, the columns of a
+    /// table or a batch).
+    #[error("invalid {field}: {length} values, but {expected} are needed ({per})")]
+    LengthMismatch {
+        /// The input whose length is wrong, as the caller names it.
+        field: String,
+        /// How many values it has.
+        length: usize,
+        /// How many it needs: the length of the input it goes with.
+        expected: usize,
+        /// What it needs one value per, in words (`"one depth z per x"`).
+        per: &'static str,
     },
 
     /// Prototype-to-test matching ([`crate::matching`]) found no valid test: the prototype's

@@ -102,6 +102,38 @@ pub struct Evolution {
     pub warnings: Vec<EvolutionWarning>,
 }
 
+/// The state at a point of the partial path from the partial-path zone `z`, the bound `limit` =
+/// `min(a_s, a(t))` its boundaries must stay below to slip, and the contact half-width `a_x`: an
+/// edge slips when the zone's boundary there is inside the bound; the stick zone reported runs
+/// to the contact edge at an edge that does not slip.
+fn classify(z: StickZone, limit: f64, a_x: f64) -> (PointState, StickZone) {
+    let one_edge = |slipping| PointState::OneEdgeSlip { slipping };
+    match (-z.left < limit, z.right < limit) {
+        (true, true) => (PointState::PartialSlip, z),
+        (false, false) => (
+            PointState::FullStick,
+            StickZone {
+                left: -a_x,
+                right: a_x,
+            },
+        ),
+        (true, false) => (
+            one_edge(Edge::Left),
+            StickZone {
+                left: z.left,
+                right: a_x,
+            },
+        ),
+        (false, true) => (
+            one_edge(Edge::Right),
+            StickZone {
+                left: -a_x,
+                right: z.right,
+            },
+        ),
+    }
+}
+
 /// The most points per half-cycle [`evolve`] takes: each point is a stick-zone solve (about 10 µs
 /// for a small table) and about 120 bytes of result, so 100,000 take about 2 s and 60 MB in the
 /// CLI; a finer sampling shows nothing more.
@@ -165,30 +197,7 @@ pub fn evolve(
                 };
                 let (z, _) = steady::stick_zone(contact, &segment, guess, options)?;
                 guess = Some((z.half_width(), z.eccentricity()));
-                let limit = start_edges.half_width.min(a_x);
-                let (left_slips, right_slips) = (-z.left < limit, z.right < limit);
-                (state, zone) = match (left_slips, right_slips) {
-                    (true, true) => (PointState::PartialSlip, z),
-                    (false, false) => (PointState::FullStick, whole),
-                    (true, false) => (
-                        PointState::OneEdgeSlip {
-                            slipping: Edge::Left,
-                        },
-                        StickZone {
-                            left: z.left,
-                            right: a_x,
-                        },
-                    ),
-                    (false, true) => (
-                        PointState::OneEdgeSlip {
-                            slipping: Edge::Right,
-                        },
-                        StickZone {
-                            left: -a_x,
-                            right: z.right,
-                        },
-                    ),
-                };
+                (state, zone) = classify(z, start_edges.half_width.min(a_x), a_x);
                 if matches!(state, PointState::OneEdgeSlip { .. }) {
                     one_edge += 1;
                 }

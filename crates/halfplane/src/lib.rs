@@ -67,7 +67,7 @@ pub use material::{Compliance, Friction, Material};
 pub use normal::Contact;
 pub use normal_moment::NormalContact;
 pub use profile::{Profile, Shape};
-pub use steady::{analyse, Regime, SteadyOptions, SteadyState, StickZone};
+pub use steady::{Regime, SteadyOptions, SteadyState, StickZone};
 
 /// The README's Rust example, compiled and run as a doctest.
 #[cfg(doctest)]

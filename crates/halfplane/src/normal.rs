@@ -11,15 +11,18 @@ use crate::quadrature::gauss_legendre;
 use std::f64::consts::PI;
 
 /// A contact: profile, material of both bodies, and friction. All parts are validated on
-/// construction, so a `Contact` is always physically meaningful.
+/// construction, so a `Contact` is always physically meaningful; its parts are read through
+/// [`Contact::profile`], [`Contact::material`] and [`Contact::friction`], never written:
+///
+/// ```compile_fail,E0616
+/// let mut contact = halfplane::reference::hertz();
+/// contact.friction = halfplane::Friction::new(0.1).unwrap();
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contact {
-    /// Gap profile g(x).
-    pub profile: Profile,
-    /// Elastic constants of both (similar) bodies.
-    pub material: Material,
-    /// Coulomb friction coefficient.
-    pub friction: Friction,
+    pub(crate) profile: Profile,
+    pub(crate) material: Material,
+    pub(crate) friction: Friction,
 }
 
 impl Contact {
@@ -30,6 +33,21 @@ impl Contact {
             material,
             friction,
         }
+    }
+
+    /// Gap profile g(x).
+    pub fn profile(&self) -> &Profile {
+        &self.profile
+    }
+
+    /// Elastic constants of both (similar) bodies.
+    pub fn material(&self) -> Material {
+        self.material
+    }
+
+    /// Coulomb friction coefficient.
+    pub fn friction(&self) -> Friction {
+        self.friction
     }
 
     /// Composite compliance A.

@@ -43,7 +43,7 @@ fn asymptotic_estimates_converge_to_the_exact_result_as_the_load_range_shrinks()
     ] {
         let c = contact(profile);
         let mut previous: Option<(f64, f64)> = None;
-        eprintln!("{:?}", c.profile.shape());
+        eprintln!("{:?}", c.profile().shape());
         for k in 0..7 {
             let lambda = 0.5f64.powi(k);
             let (w, z) = errors(&c, lambda);

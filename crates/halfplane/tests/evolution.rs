@@ -67,7 +67,7 @@ fn evolution_ends_on_the_permanent_stick_zone() {
             assert!(
                 rel(z.left, zone.left) < 1e-12 && rel(z.right, zone.right) < 1e-12,
                 "{:?} point {end}",
-                c.profile.shape()
+                c.profile().shape()
             );
         }
         assert_eq!(

@@ -120,7 +120,7 @@ fn fatemi_socie_is_taken_on_the_plane_of_the_largest_shear_strain_range() {
                     stress::at(
                         &t.traction,
                         t.load.bulk(),
-                        &contact.material,
+                        &contact.material(),
                         best.x,
                         best.z,
                     )
@@ -383,7 +383,7 @@ fn the_3d_search_finds_planes_tilted_towards_y() {
     for (x, z) in [(-0.7, 0.0), (-0.5, 0.1), (0.0, 0.3), (0.5, 0.05)] {
         let h: Vec<Stress> = kept
             .iter()
-            .map(|t| stress::at(&t.traction, t.load.bulk(), &contact.material, x, z).unwrap())
+            .map(|t| stress::at(&t.traction, t.load.bulk(), &contact.material(), x, z).unwrap())
             .collect();
         let a = values(&fatigue::critical_planes_over(&h, &m, &c, Planes::InPlane));
         let b = values(&fatigue::critical_planes_over(&h, &m, &c, Planes::Full3d));

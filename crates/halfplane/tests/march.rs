@@ -186,7 +186,7 @@ fn paper_case(profile: Profile, cells: usize) {
             assert!(
                 (l - want.left).abs() <= w && (rr - want.right).abs() <= w,
                 "{:?}, half {} at {}/4: marched [{l:.5}, {rr:.5}] vs exact [{:.5}, {:.5}], cell {w:.5}",
-                c.profile.shape(),
+                c.profile().shape(),
                 half + 1,
                 j,
                 want.left,

@@ -263,8 +263,8 @@ fn impossible_matches_are_errors_naming_the_side_and_the_constraint() {
     );
     // Slip reverses in the prototype (docs/validity.md: f = 0.3, sigma +/-345).
     let low_friction = Contact::new(
-        hertz.profile.clone(),
-        hertz.material,
+        hertz.profile().clone(),
+        hertz.material(),
         halfplane::Friction::new(0.3).unwrap(),
     );
     let reversing = Cycle::new(point(1000.0, -250.0, -345.0), point(1400.0, 250.0, 345.0));

@@ -102,7 +102,7 @@ fn pressure_integrates_to_the_load() {
         assert!(
             rel(total, load) < 1e-10,
             "{:?}: integral p = {total}, P = {load}",
-            c.profile.shape()
+            c.profile().shape()
         );
     }
 }
@@ -122,7 +122,7 @@ fn normal_intensity_is_the_edge_limit_of_the_pressure() {
         assert!(
             rel(p / s.sqrt(), k_n) < 1e-5,
             "{:?}: p/sqrt(s) = {}, K_N = {k_n}",
-            c.profile.shape(),
+            c.profile().shape(),
             p / s.sqrt()
         );
     }

@@ -20,9 +20,10 @@
 //!
 //! 1024 cases per property: the whole file takes about 0.6 s in the debug profile (budget ~5 s).
 
+use halfplane::steady::analyse;
 use halfplane::{
-    analyse, asymptotic, evolution, Contact, Cycle, Error, Friction, GivenPoint, LoadPoint,
-    Material, Profile, Regime, SteadyOptions, SteadyState,
+    asymptotic, evolution, Contact, Cycle, Error, Friction, GivenPoint, LoadPoint, Material,
+    Profile, Regime, SteadyOptions, SteadyState,
 };
 use proptest::prelude::*;
 
@@ -95,7 +96,7 @@ fn case() -> impl Strategy<Value = Case> {
     )
         .prop_map(|(contact, p1, ratio, u1, u2, t1, t2)| {
             let p2 = (p1 * 10f64.powf(ratio)).clamp(1.0, 1e4);
-            let f = contact.friction.value();
+            let f = contact.friction().value();
             // |u| < 1 strictly, so |Q| < f P.
             let (q1, q2) = (u1 * f * p1, u2 * f * p2);
             // Bulk tension up to 1.2 times the range with pi a_max |dsigma|/4 = dQ.

@@ -37,14 +37,14 @@ fn an_analysis_runs_on_another_thread() {
     let contact = halfplane::reference::hertz();
     let cycle = halfplane::reference::cycle();
     let state = std::thread::spawn(move || {
-        halfplane::analyse(&contact, &cycle, &halfplane::SteadyOptions::default())
+        halfplane::steady::analyse(&contact, &cycle, &halfplane::SteadyOptions::default())
     })
     .join()
     .unwrap()
     .unwrap();
     assert_eq!(
         state,
-        halfplane::analyse(
+        halfplane::steady::analyse(
             &halfplane::reference::hertz(),
             &halfplane::reference::cycle(),
             &halfplane::SteadyOptions::default()

@@ -133,13 +133,13 @@ pub(crate) fn test_contact(args: &TestArgs, prototype: &Contact) -> Result<Conta
     .map_err(option_error)?;
     let material = Material::new(
         args.youngs_modulus
-            .unwrap_or(prototype.material.youngs_modulus()),
+            .unwrap_or(prototype.material().youngs_modulus()),
         args.poisson_ratio
-            .unwrap_or(prototype.material.poisson_ratio()),
+            .unwrap_or(prototype.material().poisson_ratio()),
     )
     .map_err(option_error)?;
-    let friction =
-        Friction::new(args.friction.unwrap_or(prototype.friction.value())).map_err(option_error)?;
+    let friction = Friction::new(args.friction.unwrap_or(prototype.friction().value()))
+        .map_err(option_error)?;
     Ok(Contact::new(profile, material, friction))
 }
 
@@ -294,12 +294,12 @@ fn test_case(
     let _ = writeln!(
         o,
         "[material]\nyoungs_modulus = {:?}\npoisson_ratio = {:?}\n",
-        c.material.youngs_modulus(),
-        c.material.poisson_ratio()
+        c.material().youngs_modulus(),
+        c.material().poisson_ratio()
     );
-    let _ = writeln!(o, "[friction]\ncoefficient = {:?}\n", c.friction.value());
+    let _ = writeln!(o, "[friction]\ncoefficient = {:?}\n", c.friction().value());
     let _ = writeln!(o, "[profile]");
-    match c.profile.shape() {
+    match c.profile().shape() {
         halfplane::Shape::Hertz { radius } => {
             let _ = writeln!(o, "kind = \"hertz\"\nradius = {radius:?}");
         }

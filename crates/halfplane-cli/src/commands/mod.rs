@@ -44,11 +44,12 @@ pub fn run(command: &Command) -> Result<()> {
     }
 }
 
-/// What to do next when a load case is outside the steady-state analysis, chosen by the library's
-/// error variant (never by its text) and, for `match`, by the mode the command was run in (the
-/// hint offers the other one), or when a run is refused as too large.
+/// What to do next when a load case is outside the steady-state analysis or no test matches,
+/// chosen by the library's [`halfplane::Error::alternative`] (never by its text) and, for
+/// `match`, by the mode the command was run in (the hint offers the other one), or when a run is
+/// refused as too large.
 pub fn hint(error: &anyhow::Error, command: &Command) -> Option<&'static str> {
-    use halfplane::Error;
+    use halfplane::error::Alternative;
     if error
         .chain()
         .any(|e| e.downcast_ref::<crate::limits::TooLarge>().is_some())
@@ -63,31 +64,23 @@ pub fn hint(error: &anyhow::Error, command: &Command) -> Option<&'static str> {
         Command::Plot(PlotCommand::Match(a)) => a.test.exact,
         _ => false,
     };
-    match error.chain().find_map(|e| e.downcast_ref::<Error>())? {
-        Error::SlipReversesInHalf { .. }
-        | Error::StickZoneOutsideContact { .. }
-        | Error::SlipReversal { .. } => Some(
+    let library = error
+        .chain()
+        .find_map(|e| e.downcast_ref::<halfplane::Error>())?;
+    match library.alternative()? {
+        Alternative::March => Some(
             "this cycle is outside the steady-state analysis; `halfplane march` (numerical time \
              marching) has no such restriction: give the case a [history] section with \
              kind = \"cycle\"",
         ),
-        Error::NoValidMatch {
-            side: halfplane::matching::MatchSide::Test,
-            ..
-        }
-        | Error::MatchNotBracketed { .. } if exact => Some(
+        Alternative::OtherTest if exact => Some(
             "choose another test geometry (for a Hertz test a different --radius gives another \
              contact size at the same K_N) or the asymptotic match (the same command without \
              --exact)",
         ),
-        Error::NoValidMatch {
-            side: halfplane::matching::MatchSide::Test,
-            ..
-        }
-        | Error::MatchNotBracketed { .. } => Some(
+        Alternative::OtherTest => Some(
             "choose another test geometry (for a Hertz test a different --radius gives another \
              contact size at the same K_N) or the exact match (--exact)",
         ),
-        _ => None,
     }
 }

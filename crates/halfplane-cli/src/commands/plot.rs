@@ -295,7 +295,7 @@ fn stress_map(
     let field = stress::field(
         &state.traction,
         state.load.bulk(),
-        &contact.material,
+        &contact.material(),
         &px,
         &pz,
     )?;
@@ -381,7 +381,7 @@ pub fn run(config: &PlotConfig) -> Result<()> {
                 steps: steps.clone(),
                 kept: Vec::new(),
             };
-            let f = contact.friction.value();
+            let f = contact.friction().value();
             march::march(contact, history, options, |r, fields| {
                 recorder.observe(r.step, fields, f)
             })?;

@@ -56,7 +56,7 @@ impl StressConfig {
                     lines,
                 };
                 for i in 0..x.len() {
-                    stress::check_point(i, x[i], z[i])
+                    stress::check_points(&x[i..=i], &z[i..=i])
                         .map_err(|e| point_error(&origin.name(i), &e))?;
                 }
                 (x, z, origin)
@@ -245,7 +245,7 @@ pub fn report(
         .next()
         .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
     let bulk = state.load.bulk();
-    let field = stress::field(&state.traction, bulk, &contact.material, x, z)
+    let field = stress::field(&state.traction, bulk, &contact.material(), x, z)
         .context("evaluating the stresses")?;
     let points = (0..x.len())
         .map(|i| StressRow {
@@ -287,7 +287,7 @@ pub fn run(config: &StressConfig) -> Result<()> {
         .next()
         .ok_or_else(|| anyhow!("the march did not reach step {}", config.step))?;
     let bulk = state.load.bulk();
-    let evaluator = stress::Evaluator::new(&state.traction, bulk, &config.contact.material)?;
+    let evaluator = stress::Evaluator::new(&state.traction, bulk, &config.contact.material())?;
     let head = StressReport {
         step: state.step,
         normal: state.load.normal(),

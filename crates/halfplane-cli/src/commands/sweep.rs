@@ -11,7 +11,7 @@ use crate::sweep::spec::{self, Analysis, Spec};
 use crate::sweep::template::Template;
 use crate::sweep::{Layout, RowSink};
 use anyhow::{anyhow, bail, Context, Result};
-use halfplane::batch::Batch;
+use halfplane::batch::{self, Batch};
 use halfplane::design;
 use std::ops::{ControlFlow, Range};
 use std::path::{Path, PathBuf};
@@ -97,6 +97,17 @@ pub fn load(path: &Path) -> Result<(Spec, Template)> {
     resolve().with_context(|| format!("in sweep spec {}", path.display()))
 }
 
+/// `--threads`, else [`batch::THREADS_VARIABLE`] from the environment, else `None` (every core).
+fn threads(given: Option<usize>) -> halfplane::Result<Option<usize>> {
+    match given {
+        Some(n) => Ok(Some(n)),
+        None => {
+            let value = std::env::var_os(batch::THREADS_VARIABLE).unwrap_or_default();
+            batch::threads_from_text(&value.to_string_lossy())
+        }
+    }
+}
+
 impl SweepConfig {
     /// Reads the spec, checks it once, and picks this shard's rows.
     pub fn resolve(args: &SweepArgs) -> Result<Self> {
@@ -114,7 +125,7 @@ impl SweepConfig {
             };
             size::check(&spec, dir, run)?;
         }
-        let mut batch = Batch::new(args.threads)?;
+        let mut batch = Batch::new(threads(args.threads)?)?;
         if spec.analysis == Analysis::March {
             batch = batch.with_chunk_rows(MARCH_CHUNK_ROWS)?;
         }

@@ -99,7 +99,7 @@ fn side(s: &Side) -> SideOut {
         regime: s.steady.regime.as_str(),
         profile: profile_report(&s.contact),
         compliance: s.contact.compliance().value(),
-        friction: s.contact.friction.value(),
+        friction: s.contact.friction().value(),
         points: Points {
             at_point1: point(first),
             at_point2: point(second),

@@ -156,9 +156,9 @@ pub(crate) fn profile_report(contact: &Contact) -> ProfileReport {
         coefficient: None,
         exponent: None,
         rows: None,
-        kinks: contact.profile.kinks(),
+        kinks: contact.profile().kinks(),
     };
-    match contact.profile.shape() {
+    match contact.profile().shape() {
         Shape::Hertz { radius } => (r.kind, r.radius) = ("hertz", Some(*radius)),
         Shape::FlatRounded {
             flat_half_width,
@@ -234,7 +234,7 @@ impl SteadyReport {
             regime: steady.regime.as_str(),
             profile: profile_report(contact),
             compliance: contact.compliance().value(),
-            friction: contact.friction.value(),
+            friction: contact.friction().value(),
             points: Pair {
                 first: point(first),
                 second: point(second),

@@ -158,11 +158,11 @@ impl Template {
     ) -> halfplane::Result<(Cow<'_, Contact>, Cycle)> {
         let base = &self.base.contact;
         let (mut e, mut nu) = (
-            base.material.youngs_modulus(),
-            base.material.poisson_ratio(),
+            base.material().youngs_modulus(),
+            base.material().poisson_ratio(),
         );
-        let mut f = base.friction.value();
-        let mut shape = base.profile.shape().clone();
+        let mut f = base.friction().value();
+        let mut shape = base.profile().shape().clone();
         let (p1, p2) = cycle.as_given();
         let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk()]);
         let (mut material, mut friction, mut profile, mut points) = (false, false, false, false);
@@ -200,11 +200,11 @@ impl Template {
         let contact = if material || friction || profile {
             let material = match material {
                 true => Material::new(e, nu)?,
-                false => base.material,
+                false => base.material(),
             };
             let friction = match friction {
                 true => Friction::new(f)?,
-                false => base.friction,
+                false => base.friction(),
             };
             let profile = match (profile, shape) {
                 (true, Shape::Hertz { radius }) => Profile::hertz(radius)?,
@@ -222,7 +222,7 @@ impl Template {
                         exponent,
                     },
                 ) => Profile::power_law(coefficient, exponent)?,
-                _ => base.profile.clone(),
+                _ => base.profile().clone(),
             };
             Cow::Owned(Contact::new(profile, material, friction))
         } else {

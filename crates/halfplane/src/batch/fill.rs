@@ -106,27 +106,28 @@ impl Batch {
         R: Send,
     {
         let rows = out.rows()?;
-        let pool = self.pool()?;
-        let threads = pool.as_ref().map_or(1, |p| p.current_num_threads().max(1));
-        let leaf = self
-            .chunk_rows()
-            .div_ceil(threads.saturating_mul(BLOCKS_PER_THREAD))
-            .max(1);
-        let (mut first, mut rest) = (0, out);
-        while first < rows {
-            let take = self.chunk_rows().min(rows - first);
-            let (chunk, tail) = rest.split_rows(take);
-            rest = tail;
-            let values = match &pool {
-                Some(pool) => pool.install(|| solve_blocks(first, chunk, take, leaf, &solve)),
-                None => vec![solve(first, chunk)],
-            };
-            if let ControlFlow::Break(value) = between(first, values) {
-                return Ok(Some(value));
+        self.with_pool(|pool| {
+            let threads = pool.map_or(1, |p| p.current_num_threads().max(1));
+            let leaf = self
+                .chunk_rows()
+                .div_ceil(threads.saturating_mul(BLOCKS_PER_THREAD))
+                .max(1);
+            let (mut first, mut rest) = (0, out);
+            while first < rows {
+                let take = self.chunk_rows().min(rows - first);
+                let (chunk, tail) = rest.split_rows(take);
+                rest = tail;
+                let values = match pool {
+                    Some(pool) => pool.install(|| solve_blocks(first, chunk, take, leaf, &solve)),
+                    None => vec![solve(first, chunk)],
+                };
+                if let ControlFlow::Break(value) = between(first, values) {
+                    return Some(value);
+                }
+                first += take;
             }
-            first += take;
-        }
-        Ok(None)
+            None
+        })
     }
 }
 

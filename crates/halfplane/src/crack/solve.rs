@@ -163,11 +163,11 @@ impl CrackSolver {
             ("crack shear stress", shear),
         ] {
             if v.len() != self.n {
-                return Err(Error::InvalidCount {
-                    field: format!("{field} values"),
-                    value: v.len() as u64,
-                    min: self.n as u64,
-                    max: self.n as u64,
+                return Err(Error::LengthMismatch {
+                    field: field.into(),
+                    length: v.len(),
+                    expected: self.n,
+                    per: "one value per collocation point of the crack",
                 });
             }
             if let Some(bad) = v.iter().find(|x| !x.is_finite()) {

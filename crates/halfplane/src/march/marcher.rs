@@ -284,23 +284,7 @@ impl Marcher {
     fn advance(&mut self, load: LoadPoint, a: f64, step: usize) -> Result<(f64, usize)> {
         let n = self.x.len();
         let f = self.friction;
-        self.pressure_start.copy_from_slice(&self.pressure);
-        for i in 0..n {
-            // A cell stays in contact until the receding edge reaches its centre (its pressure,
-            // and so its traction, is zero then) and joins when the advancing edge does.
-            let inside = self.x[i].abs() < a.max(self.half_width);
-            self.pressure[i] = if inside {
-                self.contact.pressure(a, self.x[i])?
-            } else {
-                0.0
-            };
-            match (inside, self.cells[i]) {
-                (false, _) => self.cells[i] = Cell::Out,
-                (true, Cell::Out) => self.cells[i] = Cell::Stick,
-                _ => {}
-            }
-        }
-        self.start_cells.copy_from_slice(&self.cells);
+        self.press(a)?;
         let a0 = self.half_width;
         let d_sigma = load.bulk() - self.load.map_or(0.0, |p| p.bulk());
         if load.shear() == 0.0 && d_sigma == 0.0 && self.traction.iter().all(|q| *q == 0.0) {
@@ -408,7 +392,36 @@ impl Marcher {
             }
         }
         let energy = self.dissipation(a0, a, step)?;
-        for i in 0..n {
+        self.commit(load, a);
+        Ok((energy, passes))
+    }
+
+    /// The pressure at the new contact half-width `a` and the cells in contact: a cell stays in
+    /// contact until the receding edge reaches its centre (its pressure, and so its traction, is
+    /// zero then) and joins, sticking, when the advancing edge does. Keeps the sub-step's start.
+    fn press(&mut self, a: f64) -> Result<()> {
+        self.pressure_start.copy_from_slice(&self.pressure);
+        for i in 0..self.x.len() {
+            let inside = self.x[i].abs() < a.max(self.half_width);
+            self.pressure[i] = if inside {
+                self.contact.pressure(a, self.x[i])?
+            } else {
+                0.0
+            };
+            match (inside, self.cells[i]) {
+                (false, _) => self.cells[i] = Cell::Out,
+                (true, Cell::Out) => self.cells[i] = Cell::Stick,
+                _ => {}
+            }
+        }
+        self.start_cells.copy_from_slice(&self.cells);
+        Ok(())
+    }
+
+    /// Ends the sub-step at `load` (contact half-width `a`): the traction increments and the
+    /// settled slips added, the traction of cells out of contact zero.
+    fn commit(&mut self, load: LoadPoint, a: f64) {
+        for i in 0..self.x.len() {
             self.traction[i] += self.dq[i];
             if self.cells[i] == Cell::Out {
                 self.traction[i] = 0.0;
@@ -420,6 +433,5 @@ impl Marcher {
         }
         self.load = Some(load);
         self.half_width = a;
-        Ok((energy, passes))
     }
 }

@@ -101,9 +101,7 @@ impl MatchConstraint {
     fn of(error: &Error) -> Option<Self> {
         match error {
             Error::GrossSliding { .. } | Error::NoStickZone { .. } => Some(Self::GrossSliding),
-            Error::SlipReversesInHalf { .. } | Error::SlipReversal { .. } => {
-                Some(Self::SlipReversal)
-            }
+            Error::SlipReversesInHalf { .. } => Some(Self::SlipReversal),
             Error::StickZoneOutsideContact { .. } => Some(Self::StickZoneOutsideContact),
             _ => None,
         }

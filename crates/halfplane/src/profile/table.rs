@@ -44,10 +44,12 @@ impl Profile {
             });
         }
         if x.len() != g.len() {
-            return Err(table(
-                0,
-                format!("{} x values but {} g values", x.len(), g.len()),
-            ));
+            return Err(Error::LengthMismatch {
+                field: "g".into(),
+                length: g.len(),
+                expected: x.len(),
+                per: "one gap g per x",
+            });
         }
         if x.len() < 3 {
             return Err(table(

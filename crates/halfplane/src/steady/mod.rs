@@ -14,8 +14,8 @@ use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::profile::Shape;
 use std::f64::consts::PI;
-pub use validity::{check_slip_grows, sample_slip_growth};
-
+#[cfg(test)]
+mod tests;
 mod validity;
 
 /// How the stick zone is found.
@@ -29,16 +29,28 @@ pub enum Method {
     Implicit,
 }
 
-/// Solver parameters.
+/// Solver parameters, valid by construction: start from [`SteadyOptions::default`] and change
+/// them with the `with_*` methods, which refuse a value outside its range.
+///
+/// ```
+/// use halfplane::steady::{Method, SteadyOptions};
+///
+/// let options = SteadyOptions::default().with_method(Method::Implicit).with_tolerance(1e-12)?;
+/// assert_eq!(options.tolerance(), 1e-12);
+/// assert!(SteadyOptions::default().with_max_iterations(0).is_err());
+/// # Ok::<(), halfplane::Error>(())
+/// ```
+///
+/// No value skips the checks:
+///
+/// ```compile_fail,E0451
+/// let options = halfplane::SteadyOptions { max_iterations: 0, ..Default::default() };
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyOptions {
-    /// Stick-zone method; default [`Method::Auto`].
-    pub method: Method,
-    /// Newton stops when both steps are below `tolerance * d`; default 1e-14 (the integrals are
-    /// exact to rounding, so the answer is limited by rounding, about 1e-15 relative).
-    pub tolerance: f64,
-    /// Newton iteration cap; default 60 (3-6 are typical).
-    pub max_iterations: usize,
+    method: Method,
+    tolerance: f64,
+    max_iterations: usize,
 }
 
 impl Default for SteadyOptions {
@@ -48,6 +60,68 @@ impl Default for SteadyOptions {
             tolerance: 1e-14,
             max_iterations: 60,
         }
+    }
+}
+
+impl SteadyOptions {
+    /// Most Newton iterations allowed (3-6 are typical; the line search halves a step at most 40
+    /// times, so this bounds the work of a solve).
+    pub const MAX_ITERATIONS: usize = 10_000;
+
+    /// Stick-zone method; default [`Method::Auto`].
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// Newton stops when both steps are below `tolerance * d`; default 1e-14 (the integrals are
+    /// exact to rounding, so the answer is limited by rounding, about 1e-15 relative).
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// Newton iteration cap; default 60 (3-6 are typical).
+    pub fn max_iterations(&self) -> usize {
+        self.max_iterations
+    }
+
+    /// The same options with another method (every method is valid).
+    pub fn with_method(self, method: Method) -> Self {
+        Self { method, ..self }
+    }
+
+    /// The same options with the Newton tolerance `tolerance`, relative to the stick zone's
+    /// half-width: `1e-16 <= tolerance < 1` (below 1e-16 the steps never get there in f64).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `steady.tolerance` outside that range.
+    pub fn with_tolerance(self, tolerance: f64) -> Result<Self> {
+        if !(tolerance.is_finite() && (1e-16..1.0).contains(&tolerance)) {
+            return Err(Error::InvalidInput {
+                field: "steady.tolerance".into(),
+                value: tolerance,
+                valid: "a number with 1e-16 <= t < 1 (relative to the stick zone's half-width)",
+            });
+        }
+        Ok(Self { tolerance, ..self })
+    }
+
+    /// The same options with at most `iterations` Newton iterations, 1 to [`Self::MAX_ITERATIONS`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidCount`] naming `steady.max_iterations` outside that range.
+    pub fn with_max_iterations(self, iterations: usize) -> Result<Self> {
+        if !(1..=Self::MAX_ITERATIONS).contains(&iterations) {
+            return Err(Error::InvalidCount {
+                field: "steady.max_iterations".into(),
+                value: iterations as u64,
+                min: 1,
+                max: Self::MAX_ITERATIONS as u64,
+            });
+        }
+        Ok(Self {
+            max_iterations: iterations,
+            ..self
+        })
     }
 }
 
@@ -149,18 +223,18 @@ pub struct SteadyState {
 
 /// The data of a load segment that the stick-zone equations need.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Segment {
+pub(crate) struct Segment {
     /// `P1 + P2`.
-    pub normal_sum: f64,
+    pub(crate) normal_sum: f64,
     /// `dQ = Q2 - Q1 >= 0`.
-    pub shear_range: f64,
+    pub(crate) shear_range: f64,
     /// `dsigma = sigma1 - sigma2`.
-    pub bulk_range: f64,
+    pub(crate) bulk_range: f64,
 }
 
 impl Segment {
     /// The segment between `low` (smaller Q) and `high`.
-    pub fn between(low: &LoadPoint, high: &LoadPoint) -> Self {
+    pub(crate) fn between(low: &LoadPoint, high: &LoadPoint) -> Self {
         Self {
             normal_sum: low.normal() + high.normal(),
             shear_range: high.shear() - low.shear(),
@@ -174,7 +248,7 @@ impl Segment {
 /// The partial-slip result (the paper's permanent stick zone `[-m, n]`) is exact only when, in
 /// each half-cycle, both slip zones grow monotonically from the reversal: at a point a fraction t
 /// along a half, the stick zone of the partial path from the reversal point (the same two
-/// equations, [`stick_zone`]) must have boundaries that never move outwards (`dn/dt <= 0`,
+/// equations) must have boundaries that never move outwards (`dn/dt <= 0`,
 /// `dm/dt <= 0`) and stay inside both the starting and the current contact. Otherwise material
 /// re-sticks, or a receding edge keeps slipping in the previous half's direction and reverses
 /// later in the half, and the result is not exact (`docs/validity.md` derives this and records the
@@ -187,8 +261,8 @@ impl Segment {
 ///   end-point test `dQ > pi a_max |dsigma|/4` as the case `dP = 0`;
 /// - along each half: for a convex profile ([`crate::Profile::is_convex`]: Hertz, flat-rounded,
 ///   power law, a convex table) the start-of-half test implies it (proved in
-///   `docs/validity.md`), so nothing more is computed; for any other profile
-///   [`sample_slip_growth`] follows the partial path at 32 evenly spaced points of each half.
+///   `docs/validity.md`), so nothing more is computed; for any other profile the partial path
+///   is followed at 32 evenly spaced points of each half.
 ///
 /// Errors: [`Error::SlipReversesInHalf`] (with the half, edge and fraction where the slip zone
 /// first stops growing) and [`Error::StickZoneOutsideContact`] when `[-m, n]` is not inside the
@@ -281,7 +355,7 @@ fn no_stick_zone(contact: &Contact, segment: &Segment) -> Error {
 /// Otherwise Newton's method with the exact Jacobian and a backtracking line search, started
 /// from the symmetric solution `d = a(P_K)`, `P_K = (P1 + P2)/2 - dQ/(2f)`, `e = 0` (exact when
 /// dsigma = 0), or from `guess` = (d, e). Returns the zone and the iterations used.
-pub fn stick_zone(
+pub(crate) fn stick_zone(
     contact: &Contact,
     segment: &Segment,
     guess: Option<(f64, f64)>,
@@ -294,7 +368,7 @@ pub fn stick_zone(
         shear_range,
         bulk_range,
     } = *segment;
-    if let (Method::Auto, Shape::Hertz { radius }) = (options.method, contact.profile.shape()) {
+    if let (Method::Auto, Shape::Hertz { radius }) = (options.method(), contact.profile.shape()) {
         let (d, e) =
             closed_form::hertz_stick_zone(a_comp, *radius, f, normal_sum, shear_range, bulk_range)
                 .ok_or_else(|| no_stick_zone(contact, segment))?;
@@ -332,7 +406,7 @@ pub fn stick_zone(
     let norm = |r: [f64; 2]| ((r[0] / s1).powi(2) + (r[1] / s2).powi(2)).sqrt();
     let (mut r, mut jac) = residual(d, e)?;
     let mut last_step = f64::INFINITY;
-    for iteration in 1..=options.max_iterations {
+    for iteration in 1..=options.max_iterations() {
         let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
         let step_d = -(jac[1][1] * r[0] - jac[0][1] * r[1]) / det;
         let step_e = -(-jac[1][0] * r[0] + jac[0][0] * r[1]) / det;
@@ -341,7 +415,7 @@ pub fn stick_zone(
         }
         // Converged: the Newton step estimates the error, and its square is what remains. Tested
         // before the line search, which rounding would otherwise stall near the root.
-        if step_d.abs().max(step_e.abs()) <= options.tolerance * d {
+        if step_d.abs().max(step_e.abs()) <= options.tolerance() * d {
             return Ok((
                 StickZone::from_half_width(d + step_d, e + step_e),
                 iteration,
@@ -363,7 +437,7 @@ pub fn stick_zone(
             lambda *= 0.5;
         }
         // Near the solution rounding can stop the residual decreasing: accept a tiny full step.
-        let converging = step_d.abs().max(step_e.abs()) <= 1e3 * options.tolerance * d;
+        let converging = step_d.abs().max(step_e.abs()) <= 1e3 * options.tolerance() * d;
         match accepted {
             Some((dn, en, rn, jn)) => {
                 last_step = (dn - d).abs().max((en - e).abs()) / dn;
@@ -382,7 +456,7 @@ pub fn stick_zone(
     }
     Err(Error::NoConvergence {
         what: "stick-zone equations",
-        iterations: options.max_iterations,
+        iterations: options.max_iterations(),
         last_step,
     })
 }

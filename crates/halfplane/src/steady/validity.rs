@@ -1,8 +1,9 @@
 //! Whether the steady-state analysis applies to a partial-slip cycle: both slip zones must grow
-//! monotonically through each half-cycle (docs/validity.md, section 2). [`check_slip_grows`]
+//! monotonically through each half-cycle (docs/validity.md, section 2). `check_slip_grows`
 //! tests the start of each half exactly, which decides for every convex profile;
-//! [`sample_slip_growth`] follows the partial path along each half, for other profiles and as an
-//! independent check of that theorem.
+//! `sample_slip_growth` follows the partial path along each half, for other profiles and as an
+//! independent check of that theorem (the tests run both on their own). Private to the crate:
+//! `steady::analyse` is the public route.
 //!
 //! Conventions: point 1 is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`,
 //! `dsigma = sigma1 - sigma2`, x positive in the direction of positive Q (the right stick
@@ -172,7 +173,12 @@ fn half_width_near(contact: &Contact, normal: f64, near: f64) -> Result<f64> {
 /// test implies that (docs/validity.md, "Along the half": the boundaries move inwards while
 /// `d |pi A dsigma/(8f)| < A (dQ - f dP)/(2f)`, which holds at t = 0 and then only gets easier as
 /// d shrinks); any other profile is also sampled by [`sample_slip_growth`] at 32 points per half.
-pub fn check_slip_grows(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Result<()> {
+#[cfg(test)]
+pub(super) fn check_slip_grows(
+    contact: &Contact,
+    cycle: &Cycle,
+    options: &SteadyOptions,
+) -> Result<()> {
     check_slip_grows_with(contact, cycle, half_widths(contact, cycle)?, options)
 }
 
@@ -224,7 +230,8 @@ pub(super) fn check_slip_grows_with(
 /// # Errors
 /// [`Error::SlipReversesInHalf`] at the first failure found; [`Error::InvalidCount`] when
 /// `samples_per_half` is 0; the errors of the stick-zone solve.
-pub fn sample_slip_growth(
+#[cfg(test)]
+pub(super) fn sample_slip_growth(
     contact: &Contact,
     cycle: &Cycle,
     samples_per_half: usize,
@@ -272,6 +279,7 @@ fn halves(cycle: &Cycle, half_width: PerPoint<f64>) -> [HalfCycle; 2] {
 }
 
 /// The contact half-widths at the two points of the cycle, as given.
+#[cfg(test)]
 fn half_widths(contact: &Contact, cycle: &Cycle) -> Result<PerPoint<f64>> {
     let (first, second) = cycle.as_given();
     Ok(PerPoint {

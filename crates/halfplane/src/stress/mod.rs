@@ -93,9 +93,30 @@ impl StressField {
     }
 }
 
-/// Checks one point: `x` finite, `z` finite and `>= 0` (points inside the other body are not
-/// part of this problem). `index` names the point in errors.
-pub fn check_point(index: usize, x: f64, z: f64) -> Result<()> {
+/// Checks the points `(x[i], z[i])` a front end will ask for, before any work: one depth per
+/// position, every `x` finite, every `z` finite and `>= 0` (points inside the other body are not
+/// part of this problem). [`field`] checks the same itself.
+///
+/// # Errors
+/// [`Error::LengthMismatch`] when `z` and `x` differ in length; [`Error::InvalidInput`] for the
+/// first invalid point, its field naming the point by its 0-based index (`point 3: z`).
+pub fn check_points(x: &[f64], z: &[f64]) -> Result<()> {
+    if x.len() != z.len() {
+        return Err(Error::LengthMismatch {
+            field: "z".into(),
+            length: z.len(),
+            expected: x.len(),
+            per: "one depth z per x",
+        });
+    }
+    for (i, (&x, &z)) in x.iter().zip(z).enumerate() {
+        check_point(i, x, z)?;
+    }
+    Ok(())
+}
+
+/// Checks one point: `x` finite, `z` finite and `>= 0`. `index` names the point in errors.
+pub(crate) fn check_point(index: usize, x: f64, z: f64) -> Result<()> {
     // The common case without building the field names.
     if x.is_finite()
         && x.abs() <= MAGNITUDE_LIMIT
@@ -222,7 +243,7 @@ impl<'a> Evaluator<'a> {
     /// Stresses at the points `(x[i], z[i])`, in order, exactly as [`field`] gives them. Errors
     /// name the point by its 0-based index in `x`.
     pub fn field(&self, x: &[f64], z: &[f64]) -> Result<StressField> {
-        check_points(self.bulk, x, z)?;
+        check_request(self.bulk, x, z)?;
         let (t, bulk) = (self.traction, self.bulk);
         let Some(tree) = &self.tree else {
             return field_direct(t, bulk, &self.material, x, z);
@@ -263,7 +284,7 @@ pub fn field_direct(
     x: &[f64],
     z: &[f64],
 ) -> Result<StressField> {
-    check_points(bulk, x, z)?;
+    check_request(bulk, x, z)?;
     let nu = material.poisson_ratio();
     let mut out = StressField {
         sxx: Vec::with_capacity(x.len()),
@@ -285,18 +306,9 @@ fn push(out: &mut StressField, s: Stress) {
     out.sxz.push(s.sxz);
 }
 
-fn check_points(bulk: f64, x: &[f64], z: &[f64]) -> Result<()> {
-    if x.len() != z.len() {
-        return Err(Error::InvalidCount {
-            field: "z (number of depths, one per x)".into(),
-            value: z.len() as u64,
-            min: x.len() as u64,
-            max: x.len() as u64,
-        });
+fn check_request(bulk: f64, x: &[f64], z: &[f64]) -> Result<()> {
+    if x.len() == z.len() {
+        physical("bulk tension", bulk)?;
     }
-    physical("bulk tension", bulk)?;
-    for (i, (&x, &z)) in x.iter().zip(z).enumerate() {
-        check_point(i, x, z)?;
-    }
-    Ok(())
+    check_points(x, z)
 }

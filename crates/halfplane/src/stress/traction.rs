@@ -43,8 +43,8 @@ impl Traction {
     /// there. Errors name the array and the index.
     pub fn piecewise_linear(x: &[f64], pressure: &[f64], shear: &[f64]) -> Result<Self> {
         check_nodes("traction x", x, 2)?;
-        check_values("traction pressure", pressure, x.len())?;
-        check_values("traction shear", shear, x.len())?;
+        check_values("traction pressure", pressure, x.len(), NODE)?;
+        check_values("traction shear", shear, x.len(), NODE)?;
         let n = x.len();
         let slope = |v: &[f64], e: usize| (v[e + 1] - v[e]) / (x[e + 1] - x[e]);
         let mut jump = vec![[0.0; 2]; n];
@@ -82,8 +82,8 @@ impl Traction {
     pub fn piecewise_constant(edges: &[f64], pressure: &[f64], shear: &[f64]) -> Result<Self> {
         check_nodes("traction edges", edges, 2)?;
         let cells = edges.len() - 1;
-        check_values("traction pressure", pressure, cells)?;
-        check_values("traction shear", shear, cells)?;
+        check_values("traction pressure", pressure, cells, CELL)?;
+        check_values("traction shear", shear, cells, CELL)?;
         let value = |v: &[f64], i: usize| if i < cells { v[i] } else { 0.0 };
         let jump = (0..edges.len())
             .map(|k| {
@@ -229,13 +229,18 @@ fn check_nodes(field: &str, x: &[f64], min: usize) -> Result<()> {
     Ok(())
 }
 
-fn check_values(field: &str, v: &[f64], len: usize) -> Result<()> {
+/// What a traction's values go with, for [`Error::LengthMismatch`]: nodes, or cells.
+const NODE: &str = "one value per node";
+/// See [`NODE`].
+const CELL: &str = "one value per cell between two edges";
+
+fn check_values(field: &str, v: &[f64], len: usize, per: &'static str) -> Result<()> {
     if v.len() != len {
-        return Err(Error::InvalidCount {
-            field: format!("{field} (number of values)"),
-            value: v.len() as u64,
-            min: len as u64,
-            max: len as u64,
+        return Err(Error::LengthMismatch {
+            field: field.into(),
+            length: v.len(),
+            expected: len,
+            per,
         });
     }
     for (i, v) in v.iter().enumerate() {

@@ -133,6 +133,67 @@ fn order_for(radius: f64) -> (usize, f64) {
     (((TOLERANCE * (1.0 - c)).ln() / c.ln()).ceil() as usize, c)
 }
 
+/// The extent `[first node, last node]` of the elements in every box (`None`: empty), and each
+/// level's box columns `lo..hi`, coarsest level first: the finest level from the elements' first
+/// indices per column `first` (columns `lo..hi`), each coarser one the union of its two children.
+type Extents = Vec<Vec<Option<(f64, f64)>>>;
+
+fn box_extents(
+    t: &Traction,
+    first: &[usize],
+    (lo, hi): (i64, i64),
+    finest: usize,
+) -> (Extents, Vec<(i64, i64)>) {
+    let mut extents: Extents = vec![(lo..hi)
+        .map(|j| {
+            let (a, b) = (first[(j - lo) as usize], first[(j - lo + 1) as usize]);
+            (b > a).then(|| (t.nodes[a], t.nodes[b]))
+        })
+        .collect()];
+    let mut bounds = vec![(lo, hi)];
+    for _ in 0..finest {
+        let (clo, chi) = *bounds.last().unwrap_or(&(lo, hi));
+        let child = extents.last().cloned().unwrap_or_default();
+        let (plo, phi) = (clo >> 1, ((chi - 1) >> 1) + 1);
+        let mut parent = vec![None; (phi - plo) as usize];
+        for (j, ext) in (clo..chi).zip(child) {
+            if let Some((a, b)) = ext {
+                let slot: &mut Option<(f64, f64)> = &mut parent[((j >> 1) - plo) as usize];
+                *slot = Some(slot.map_or((a, b), |(pa, pb)| (pa.min(a), pb.max(b))));
+            }
+        }
+        extents.push(parent);
+        bounds.push((plo, phi));
+    }
+    extents.reverse();
+    bounds.reverse();
+    (extents, bounds)
+}
+
+/// The upward pass: every occupied box's multipoles translated to its parent's centre (`m2m`),
+/// from the level above the finest to the root.
+fn upward(levels: &mut [Level], finest: usize, ex: &Expansions) {
+    let p = ex.order;
+    for l in (0..finest).rev() {
+        let (upper, lower) = levels.split_at_mut(l + 1);
+        let (parent, child) = (&mut upper[l], &lower[0]);
+        for j in child.lo..child.hi {
+            let cs = (j - child.lo) as usize;
+            if !child.occupied[cs] {
+                continue;
+            }
+            let ps = ((j >> 1) - parent.lo) as usize;
+            // Child centre minus parent centre, in parent widths: -1/4 or +1/4.
+            let delta = if j & 1 == 0 { -0.25 } else { 0.25 };
+            let (pm, cm) = (
+                &mut parent.multipoles[ps * 2 * p..(ps + 1) * 2 * p],
+                &child.multipoles[cs * 2 * p..(cs + 1) * 2 * p],
+            );
+            ex.m2m(pm, cm, delta);
+        }
+    }
+}
+
 impl<'a> Tree<'a> {
     /// The tree, or `None` when the traction is too small for one to pay (fewer than
     /// three levels: sum directly).
@@ -167,30 +228,7 @@ impl<'a> Tree<'a> {
         let first: Vec<usize> = (lo..=hi)
             .map(|j| columns.partition_point(|&c| c < j))
             .collect();
-        // Extents of every box, finest level first, for the radius bound.
-        let mut extents: Vec<Vec<Option<(f64, f64)>>> = vec![(lo..hi)
-            .map(|j| {
-                let (a, b) = (first[(j - lo) as usize], first[(j - lo + 1) as usize]);
-                (b > a).then(|| (t.nodes[a], t.nodes[b]))
-            })
-            .collect()];
-        let mut bounds = vec![(lo, hi)];
-        for _ in 0..finest {
-            let (clo, chi) = *bounds.last().unwrap_or(&(lo, hi));
-            let child = extents.last().cloned().unwrap_or_default();
-            let (plo, phi) = (clo >> 1, ((chi - 1) >> 1) + 1);
-            let mut parent = vec![None; (phi - plo) as usize];
-            for (j, ext) in (clo..chi).zip(child) {
-                if let Some((a, b)) = ext {
-                    let slot: &mut Option<(f64, f64)> = &mut parent[((j >> 1) - plo) as usize];
-                    *slot = Some(slot.map_or((a, b), |(pa, pb)| (pa.min(a), pb.max(b))));
-                }
-            }
-            extents.push(parent);
-            bounds.push((plo, phi));
-        }
-        extents.reverse();
-        bounds.reverse();
+        let (extents, bounds) = box_extents(t, &first, (lo, hi), finest);
         let mut radius: f64 = 0.5;
         for (l, (ext, &(blo, _))) in extents.iter().zip(&bounds).enumerate() {
             let w = width / (1u64 << l) as f64;
@@ -244,24 +282,7 @@ impl<'a> Tree<'a> {
                 }
             }
         }
-        for l in (0..finest).rev() {
-            let (upper, lower) = levels.split_at_mut(l + 1);
-            let (parent, child) = (&mut upper[l], &lower[0]);
-            for j in child.lo..child.hi {
-                let cs = (j - child.lo) as usize;
-                if !child.occupied[cs] {
-                    continue;
-                }
-                let ps = ((j >> 1) - parent.lo) as usize;
-                // Child centre minus parent centre, in parent widths: -1/4 or +1/4.
-                let delta = if j & 1 == 0 { -0.25 } else { 0.25 };
-                let (pm, cm) = (
-                    &mut parent.multipoles[ps * 2 * p..(ps + 1) * 2 * p],
-                    &child.multipoles[cs * 2 * p..(cs + 1) * 2 * p],
-                );
-                ex.m2m(pm, cm, delta);
-            }
-        }
+        upward(&mut levels, finest, &ex);
         Some(Self {
             t,
             elements,
