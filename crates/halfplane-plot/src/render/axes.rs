@@ -80,7 +80,8 @@ pub(super) fn split_bar<DB: DrawingBackend>(
 }
 
 /// Tick labels of an axis from `lo` to `hi`: as many decimals as the tick spacing needs (none for
-/// integer ticks: "50", not "50.0"), and never "-0".
+/// integer ticks: "50", not "50.0"), never "-0", and scientific notation only for ticks finer
+/// than 1e-4 or beyond 1e7.
 fn tick_formatter(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let ticks = RangedCoordf64::from(lo..hi).key_points(TICKS);
     let step = ticks
@@ -95,7 +96,13 @@ fn tick_formatter(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
             })
         })
         .unwrap_or(6);
+    // Ticks finer than 1e-4 or beyond 1e7 in scientific notation ("1.5e-7"), as crate::number.
+    let largest = ticks.iter().fold(0.0_f64, |m, t| m.max(t.abs()));
+    let scientific = decimals > 4 || largest >= 1e7;
     move |v| {
+        if scientific {
+            return crate::number(if v.abs() < 1e-9 * step { 0.0 } else { *v });
+        }
         let s = format!("{v:.decimals$}");
         if s.trim_start_matches('-')
             .chars()
@@ -205,5 +212,13 @@ mod tests {
         let f = tick_formatter(-0.0007, 0.0014);
         assert_eq!(f(&0.0005), "0.0005");
         assert_eq!(f(&-0.0), "0.0000");
+        // Slip of a fraction of a micrometre: scientific, not 0.00000015.
+        let f = tick_formatter(0.0, 4e-7);
+        assert_eq!(f(&1.5e-7), "1.5e-7");
+        assert_eq!(f(&0.0), "0");
+        let f = tick_formatter(0.0, 2e7);
+        assert_eq!(f(&1.2e7), "1.2e7");
+        let f = tick_formatter(0.0, 15000.0);
+        assert_eq!(f(&12000.0), "12000");
     }
 }
