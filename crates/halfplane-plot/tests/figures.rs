@@ -528,9 +528,26 @@ fn a_design_map_fills_its_grid_between_the_points_and_greys_the_rows_without_a_v
     let bar = panel.color_bar.as_ref().unwrap();
     assert_eq!(bar.bounds[0], 0.0);
     assert!((bar.bounds[bar.bounds.len() - 1] - 17.0 * 0.9).abs() < 1e-12);
-    assert!(svg.contains(&bar.label), "colour bar label drawn");
+    // The bar is drawn: its label, every level's label as a text of its own, and one rectangle
+    // per band in the band's colour.
+    let labels = texts(&svg);
+    assert!(
+        labels.contains(&bar.label.as_str()),
+        "colour bar label drawn"
+    );
     for (_, label) in &bar.ticks {
-        assert!(svg.contains(&format!(">{label}\n<")) || svg.contains(label.as_str()));
+        assert!(
+            labels.contains(&label.as_str()),
+            "level {label} not labelled"
+        );
+    }
+    let rects = elements(&svg, "rect");
+    for &(r, g, b) in &bar.colors {
+        let fill = format!("#{r:02X}{g:02X}{b:02X}");
+        assert!(
+            rects.iter().any(|e| attribute(e, "fill") == fill),
+            "band {fill} missing from the bar"
+        );
     }
     let missing = panel.series.iter().find(|s| s.name == "no value").unwrap();
     assert_eq!(
