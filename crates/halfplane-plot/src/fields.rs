@@ -45,20 +45,22 @@ fn field_map(
     ))
 }
 
-/// The largest finite value of the map and where it is, `(x, z, value)`.
-fn maximum(map: &GridMap) -> Option<(f64, f64, f64)> {
+/// The largest (`largest`) or smallest finite value of the map and where it is, `(x, z, value)`.
+fn extreme(map: &GridMap, largest: bool) -> Option<(f64, f64, f64)> {
     let nx = map.x.len();
-    map.values
-        .iter()
-        .enumerate()
-        .filter(|(_, v)| v.is_finite())
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .map(|(k, &v)| (map.x[k % nx], map.z[k / nx], v))
+    let finite = map.values.iter().enumerate().filter(|(_, v)| v.is_finite());
+    let found = if largest {
+        finite.max_by(|a, b| a.1.total_cmp(b.1))
+    } else {
+        finite.min_by(|a, b| a.1.total_cmp(b.1))
+    };
+    found.map(|(k, &v)| (map.x[k % nx], map.z[k / nx], v))
 }
 
-/// The marker of a maximum `value` (with its unit, leading space included) at (x, z), its text
-/// `"max {value} at (x, z) = ({x}, {z}) {length}{extra}"` written beside it.
-fn marked_maximum(
+/// The marker of an extreme `value` (with its unit, leading space included) at (x, z), its text
+/// `"{what} {value} at (x, z) = ({x}, {z}) {length}{extra}"` written beside it.
+fn marked(
+    what: &str,
     (x, z, value): (f64, f64, f64),
     unit: &str,
     units: &Units,
@@ -66,7 +68,7 @@ fn marked_maximum(
 ) -> Series {
     Series::new(
         format!(
-            "max {}{unit} at (x, z) = ({}, {}) {}{extra}",
+            "{what} {}{unit} at (x, z) = ({}, {}) {}{extra}",
             number(value),
             number(x),
             number(z),
@@ -84,7 +86,7 @@ fn depth_label(units: &Units) -> String {
 
 /// The filled map of one stress component below the contact at increment `step`, on a diverging
 /// colour map centred on zero (tension red, compression blue) with its colour bar, the contact on
-/// the surface and the largest value marked: `name` is the component as shown (for example
+/// the surface and the largest and (when negative) the smallest value marked: `name` is the component as shown (for example
 /// "σxx"), `half_width` the contact half-width at that increment. The values are the caller's,
 /// in the stress unit; x and depth are drawn to the same scale.
 pub fn stress_map_figure(
@@ -102,13 +104,13 @@ pub fn stress_map_figure(
         3,
         vec![(-half_width, 0.0), (half_width, 0.0)],
     ));
-    if let Some(max) = maximum(map) {
-        series.push(marked_maximum(
-            max,
-            &format!(" {}", units.stress),
-            units,
-            "",
-        ));
+    // Both extremes of a signed stress: the largest tension and the largest compression.
+    let unit = format!(" {}", units.stress);
+    if let Some(max) = extreme(map, true) {
+        series.push(marked("max", max, &unit, units, ""));
+    }
+    if let Some(min) = extreme(map, false).filter(|m| m.2 < 0.0) {
+        series.push(marked("min", min, &unit, units, ""));
     }
     Ok(Figure {
         title: format!("{name} below the contact at increment {step}"),
@@ -184,7 +186,8 @@ pub fn fatigue_map_figure(
     let plane = best
         .angle
         .map_or(String::new(), |a| format!(", plane {a:.1}°"));
-    series.push(marked_maximum(
+    series.push(marked(
+        "max",
         (best.x, best.z, best.value),
         &unit,
         units,

@@ -557,3 +557,41 @@ fn a_design_map_fills_its_grid_between_the_points_and_greys_the_rows_without_a_v
     );
     assert!(svg.contains("shear load Q at point 2 (N/mm)"));
 }
+
+#[test]
+fn annotations_of_nearby_markers_do_not_cover_each_other() {
+    // Two marked values a few pixels apart on the surface of a map (as the largest tension and
+    // compression of a stress can be): their labels go to different places, not one on the
+    // other (they overlapped before the labels were placed apart).
+    let mut panel = Panel::new(
+        "",
+        "x (mm)",
+        "y (mm)",
+        vec![
+            Series::new("", Style::Line, 3, vec![(0.0, -1.0), (1.0, 0.0)]),
+            Series::new("max 780.5 MPa", Style::Annotated, 3, vec![(0.2, 0.0)]),
+            Series::new("min −843.5 MPa", Style::Annotated, 3, vec![(0.25, 0.0)]),
+        ],
+    );
+    panel.legend = Legend::Below;
+    let f = Figure {
+        title: "t".into(),
+        panels: vec![panel],
+    };
+    let svg = check_svg(&f);
+    let at = |label: &str| {
+        let start = svg.find(&format!(">\n{label}")).unwrap_or_else(|| {
+            svg.find(&format!(">{label}"))
+                .unwrap_or_else(|| panic!("{label} not drawn"))
+        });
+        let element = &svg[svg[..start].rfind("<text").unwrap()..start];
+        let number = |name: &str| attribute(element, name).parse::<i32>().unwrap();
+        (number("x"), number("y"))
+    };
+    let (a, b) = (at("max 780.5 MPa"), at("min −843.5 MPa"));
+    // Labels are 13-px text: apart by a line's height, or side by side without overlap.
+    assert!(
+        (a.1 - b.1).abs() >= 16 || (a.0 - b.0).abs() >= 120,
+        "labels at {a:?} and {b:?}"
+    );
+}

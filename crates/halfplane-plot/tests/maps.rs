@@ -82,10 +82,18 @@ fn stress_map_bands_cover_the_grid_and_its_lines_lie_on_the_bar_levels() {
             "({px}, {py}) has {v}, on no level"
         );
     }
-    // The maximum, 100 at x = 1 on the surface, is marked with its value.
-    let max = styled(&f, |s| *s == Style::Annotated);
-    assert_eq!(max[0].pieces[0], vec![(1.0, 0.0)]);
-    assert!(max[0].name.starts_with("max 100 MPa at (x, z) = (1, 0) mm"));
+    // The maximum, 100 at x = 1 on the surface, and the minimum, -150 at x = -1 at the bottom,
+    // are marked with their values.
+    let marks = styled(&f, |s| *s == Style::Annotated);
+    assert_eq!(marks.len(), 2);
+    assert_eq!(marks[0].pieces[0], vec![(1.0, 0.0)]);
+    assert!(marks[0]
+        .name
+        .starts_with("max 100 MPa at (x, z) = (1, 0) mm"));
+    assert_eq!(marks[1].pieces[0], vec![(-1.0, -1.0)]);
+    assert!(marks[1]
+        .name
+        .starts_with("min −150 MPa at (x, z) = (−1, 1) mm"));
     let contact = panel
         .series
         .iter()

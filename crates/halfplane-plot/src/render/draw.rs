@@ -92,9 +92,11 @@ where
         };
         let mut series: Vec<&Series> = panel.series.iter().collect();
         series.sort_by_key(order);
+        // The annotation labels drawn so far, so the next goes where none is.
+        let mut placed = Vec::new();
         for s in series {
             if s.style == Style::Annotated {
-                annotate(&root, &chart, s)?;
+                annotate(&root, &chart, s, &mut placed)?;
                 continue;
             }
             series_on(&mut chart, s)?;
@@ -208,13 +210,14 @@ where
 }
 
 /// The series' markers, each with its name written near it on a white ground (so it reads over a
-/// filled map) and joined to it by a thin line: below and to the right, or on the other side
-/// where that has no room, so that the neighbourhood of the marker stays visible. A marker
-/// outside the plotting area is not drawn.
+/// filled map) and joined to it by a thin line: below and to the right, or on another side or
+/// further away where that has no room or an earlier label (`placed`) is there, so that the
+/// neighbourhood of the marker stays visible. A marker outside the plotting area is not drawn.
 fn annotate<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     chart: &Chart<'_, DB>,
     s: &Series,
+    placed: &mut Vec<(i32, i32, i32, i32)>,
 ) -> Result<(), PlotError>
 where
     DB::ErrorType: 'static,
@@ -232,16 +235,31 @@ where
         if px < xr.start || px > xr.end || py < yr.start || py > yr.end {
             continue;
         }
-        let x = if px + OFFSET.0 + w + PAD <= xr.end {
-            px + OFFSET.0
-        } else {
-            (px - OFFSET.0 - w).max(xr.start + PAD)
+        // Candidate places, nearest first: below or above, right or left, stepping away from
+        // the marker; the first inside the plotting area that no earlier label covers.
+        let fits = |(x, y): (i32, i32)| {
+            x >= xr.start + PAD
+                && x + w + PAD <= xr.end
+                && y >= yr.start + PAD
+                && y + h + PAD <= yr.end
+                && !placed.iter().any(|&(x0, y0, x1, y1)| {
+                    x - 3 <= x1 && x + w + 3 >= x0 && y - 2 <= y1 && y + h + 2 >= y0
+                })
         };
-        let y = if py + OFFSET.1 + h + PAD <= yr.end {
-            py + OFFSET.1
-        } else {
-            (py - OFFSET.1 - h).max(yr.start + PAD)
-        };
+        let candidates = (0..4).flat_map(|k| {
+            let dy = OFFSET.1 + k * (h + 8);
+            [
+                (px + OFFSET.0, py + dy),
+                (px - OFFSET.0 - w, py + dy),
+                (px + OFFSET.0, py - dy - h),
+                (px - OFFSET.0 - w, py - dy - h),
+            ]
+        });
+        let (x, y) = candidates
+            .clone()
+            .find(|&c| fits(c))
+            .unwrap_or((px + OFFSET.0, py + OFFSET.1));
+        placed.push((x - 3, y - 2, x + w + 3, y + h + 2));
         let (ax, ay) = (
             if x > px { x - 3 } else { x + w + 3 },
             if y > py { y - 2 } else { y + h + 2 },
