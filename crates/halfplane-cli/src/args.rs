@@ -234,17 +234,19 @@ pub enum PlotCommand {
     /// Load spaces of a prototype and its matched test side by side, with the P-S paths of both
     /// edges (needs [cycle]; test geometry options as `halfplane match`).
     Match(MatchFigureArgs),
-    /// Contours of a stress component below the contact at a marched increment (needs
-    /// [history]).
+    /// Filled contours of a stress component below the contact at a marched increment, with a
+    /// colour bar and the maximum marked (needs [history]).
     StressMap(StressMapArgs),
-    /// Contours of a fatigue parameter over the steady cycle with its maximum marked (needs a
-    /// cyclic [history] and the parameter's constants in [fatigue], whose grid it uses).
+    /// Filled contours of a fatigue parameter over the steady cycle, with a colour bar and the
+    /// maximum marked (needs a cyclic [history] and the parameter's constants in [fatigue],
+    /// whose grid it uses).
     FatigueMap(FatigueMapArgs),
     /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
     /// [history]).
     SurfaceProfiles(SurfaceProfilesArgs),
     /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
-    /// colour map of any numeric column with contours (takes the sweep's output, not a case).
+    /// filled-contour map of any numeric column with a colour bar (takes the sweep's output, not a
+    /// case).
     DesignMap(DesignMapArgs),
 }
 
@@ -475,7 +477,7 @@ pub struct DesignMapArgs {
     #[arg(long)]
     pub y: String,
     /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
-    /// slip_right_1 (filled bands with contours).
+    /// slip_right_1 (filled contours with a colour bar).
     #[arg(long, default_value = "regime")]
     pub color: String,
     /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show

@@ -1,5 +1,6 @@
-//! Contour lines of a field sampled on a rectangular grid (marching squares), and the levels to
-//! draw: drawing geometry only, no physics.
+//! Contour lines of a field sampled on a rectangular grid (marching squares), filled contour
+//! bands and their boundary lines ([`filled_contours`]), and the levels to draw: drawing geometry
+//! only, no physics.
 
 /// A scalar field on a grid below the surface: `values` row after row, `z` outer and `x` inner
 /// (`z.len()` rows of `x.len()` values), `z` the depth.
@@ -111,24 +112,180 @@ pub fn contour_segments(
     out
 }
 
-/// The iso-line `value = level` of a field below the surface as disjoint segments (consecutive
-/// pairs of points), in plot coordinates `(x, -z)` so that depth runs downwards. Cells with a
-/// value that is not finite are skipped.
-pub fn segments(map: &GridMap, level: f64) -> Vec<(f64, f64)> {
-    if !map.is_consistent() {
-        return Vec::new();
+/// Filled contours of a field on the grid `xs` × `ys`: for each band between consecutive
+/// `bounds` (increasing), the polygons where the field lies in it, and for each interior bound the
+/// line where the field takes it (consecutive pairs of points), both from the same interpolation,
+/// so the lines are the bands' edges.
+///
+/// Each cell is split into four triangles by its centre, given the mean of the corner values, and
+/// the field is linear on each triangle (the centre split decides a saddle as marching squares
+/// does). A band clips a triangle to a convex polygon (Sutherland & Hodgman 1974): the bands
+/// tile every cell whose four corners have a value, with no staircase at cell edges. Values
+/// below the first bound count to the first band and above the last to the last. Rows of cells
+/// wholly in one band are merged into one rectangle. Cells with a missing corner are left out.
+pub fn filled_contours(
+    xs: &[f64],
+    ys: &[f64],
+    value: impl Fn(usize, usize) -> Option<f64>,
+    bounds: &[f64],
+) -> FilledContours {
+    let count = bounds.len().saturating_sub(1);
+    let mut out = FilledContours {
+        bands: vec![Vec::new(); count],
+        lines: vec![Vec::new(); count.saturating_sub(1)],
+    };
+    if count == 0 {
+        return out;
     }
-    let nx = map.x.len();
-    let value = |i: usize, j: usize| Some(map.values[j * nx + i]).filter(|v| v.is_finite());
-    contour_segments(map.x, map.z, value, level)
-        .into_iter()
-        .flat_map(|((x0, z0), (x1, z1))| [(x0, -z0), (x1, -z1)])
-        .collect()
+    let interior = &bounds[1..count];
+    let band = |v: f64| interior.iter().filter(|&&l| v >= l).count();
+    for iy in 0..ys.len().saturating_sub(1) {
+        // A run of whole cells in one band along the row: (band, first x, last x).
+        let mut run: Option<(usize, f64, f64)> = None;
+        for ix in 0..xs.len().saturating_sub(1) {
+            let at = [(ix, iy), (ix + 1, iy), (ix + 1, iy + 1), (ix, iy + 1)];
+            let Some(v) = at
+                .iter()
+                .map(|&(i, j)| value(i, j))
+                .collect::<Option<Vec<f64>>>()
+            else {
+                flush(&mut out, &mut run, ys[iy], ys[iy + 1]);
+                continue;
+            };
+            let centre = 0.25 * v.iter().sum::<f64>();
+            let b = band(centre);
+            if v.iter().all(|&c| band(c) == b) {
+                match &mut run {
+                    Some((rb, _, x1)) if *rb == b => *x1 = xs[ix + 1],
+                    _ => {
+                        flush(&mut out, &mut run, ys[iy], ys[iy + 1]);
+                        run = Some((b, xs[ix], xs[ix + 1]));
+                    }
+                }
+                continue;
+            }
+            flush(&mut out, &mut run, ys[iy], ys[iy + 1]);
+            let p: Vec<Vertex> = at
+                .iter()
+                .zip(&v)
+                .map(|(&(i, j), &v)| (xs[i], ys[j], v))
+                .collect();
+            let c = (
+                0.5 * (xs[ix] + xs[ix + 1]),
+                0.5 * (ys[iy] + ys[iy + 1]),
+                centre,
+            );
+            for k in 0..4 {
+                let triangle = [p[k], p[(k + 1) % 4], c];
+                let (lo, hi) = triangle.iter().fold((usize::MAX, 0), |(lo, hi), t| {
+                    (lo.min(band(t.2)), hi.max(band(t.2)))
+                });
+                for b in lo..=hi {
+                    let mut polygon = triangle.to_vec();
+                    if b > 0 {
+                        polygon = clip(&polygon, bounds[b], 1.0);
+                    }
+                    if b + 1 < count {
+                        polygon = clip(&polygon, bounds[b + 1], -1.0);
+                    }
+                    // A level through a corner can leave a polygon of no area: not drawn.
+                    if polygon.len() >= 3 && twice_area(&polygon) > 0.0 {
+                        out.bands[b].push(polygon.iter().map(|q| (q.0, q.1)).collect());
+                    }
+                }
+                for (l, &level) in interior.iter().enumerate() {
+                    out.lines[l].extend(crossing(&triangle, level));
+                }
+            }
+        }
+        flush(&mut out, &mut run, ys[iy], ys[iy + 1]);
+    }
+    out
+}
+
+/// What [`filled_contours`] draws.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FilledContours {
+    /// For each band, its polygons (each a list of corners, not closed).
+    pub bands: Vec<Vec<Vec<(f64, f64)>>>,
+    /// For each interior bound, its line as disjoint segments (consecutive pairs of points).
+    pub lines: Vec<Vec<(f64, f64)>>,
+}
+
+/// A corner of a triangle with the field's value there.
+type Vertex = (f64, f64, f64);
+
+/// Twice the signed area of a polygon (shoelace formula), positive counter-clockwise.
+fn twice_area(p: &[Vertex]) -> f64 {
+    (0..p.len())
+        .map(|k| {
+            let (a, b) = (p[k], p[(k + 1) % p.len()]);
+            a.0 * b.1 - b.0 * a.1
+        })
+        .sum()
+}
+
+/// Ends a run of whole cells between rows `y0` and `y1`: one rectangle in its band.
+fn flush(out: &mut FilledContours, run: &mut Option<(usize, f64, f64)>, y0: f64, y1: f64) {
+    if let Some((b, x0, x1)) = run.take() {
+        out.bands[b].push(vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]);
+    }
+}
+
+/// The part of the convex polygon where `side * (v - level) >= 0` (Sutherland-Hodgman against
+/// one half-plane, the field linear along each edge).
+fn clip(polygon: &[Vertex], level: f64, side: f64) -> Vec<Vertex> {
+    let inside = |p: &Vertex| side * (p.2 - level) >= 0.0;
+    let mut out = Vec::with_capacity(polygon.len() + 2);
+    for (k, a) in polygon.iter().enumerate() {
+        let b = &polygon[(k + 1) % polygon.len()];
+        if inside(a) {
+            out.push(*a);
+        }
+        if inside(a) != inside(b) {
+            let t = (level - a.2) / (b.2 - a.2);
+            out.push((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1), level));
+        }
+    }
+    out
+}
+
+/// The segment where the field, linear on the triangle, takes `level` (none when it does not
+/// cross: a level touching a corner only, or lying on a whole edge, draws nothing here).
+fn crossing(triangle: &[Vertex; 3], level: f64) -> Vec<(f64, f64)> {
+    let mut ends = Vec::with_capacity(2);
+    for k in 0..3 {
+        let (a, b) = (triangle[k], triangle[(k + 1) % 3]);
+        if (a.2 < level) != (b.2 < level) {
+            let t = (level - a.2) / (b.2 - a.2);
+            ends.push((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)));
+        }
+    }
+    if ends.len() == 2 {
+        ends
+    } else {
+        Vec::new()
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The iso-line `value = level` of a field below the surface as disjoint segments (consecutive
+    /// pairs of points), in plot coordinates `(x, -z)` so that depth runs downwards. Cells with a
+    /// value that is not finite are skipped.
+    fn segments(map: &GridMap, level: f64) -> Vec<(f64, f64)> {
+        if !map.is_consistent() {
+            return Vec::new();
+        }
+        let nx = map.x.len();
+        let value = |i: usize, j: usize| Some(map.values[j * nx + i]).filter(|v| v.is_finite());
+        contour_segments(map.x, map.z, value, level)
+            .into_iter()
+            .flat_map(|((x0, z0), (x1, z1))| [(x0, -z0), (x1, -z1)])
+            .collect()
+    }
 
     #[test]
     fn contours_of_a_plane_lie_on_its_level_line() {
@@ -147,6 +304,58 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The area of a polygon (shoelace formula), positive counter-clockwise.
+    fn area(p: &[(f64, f64)]) -> f64 {
+        0.5 * (0..p.len())
+            .map(|k| {
+                let (a, b) = (p[k], p[(k + 1) % p.len()]);
+                a.0 * b.1 - b.0 * a.1
+            })
+            .sum::<f64>()
+    }
+
+    #[test]
+    fn filled_bands_tile_the_grid_and_hold_their_values() {
+        // A saddle-free but curved field v = x^2 + 3 y on an uneven 7 x 5 grid, bounds from its
+        // minimum to its maximum: the bands' polygons cover the grid's area exactly (to rounding,
+        // 1e-12 of it) without overlap (every polygon counter-clockwise, areas summing to the
+        // total), and each polygon's corners take values inside its band on the triangle
+        // interpolation (checked through the linear field v = x + 2y, for which it is exact).
+        let xs = [0.0, 0.3, 0.5, 1.0, 1.6, 2.0, 2.5];
+        let ys = [0.0, 0.2, 0.7, 0.9, 1.5];
+        let curved = |i: usize, j: usize| Some(xs[i] * xs[i] + 3.0 * ys[j]);
+        let bounds = [0.0, 1.0, 2.0, 2.5, 4.0, 6.25 + 4.5];
+        let filled = filled_contours(&xs, &ys, curved, &bounds);
+        let total: f64 = filled.bands.iter().flatten().map(|p| area(p)).sum();
+        assert!((total - 2.5 * 1.5).abs() < 1e-12, "covered {total}");
+        assert!(filled.bands.iter().flatten().all(|p| area(p) > 0.0));
+        assert_eq!(filled.lines.len(), 4);
+        let linear = |i: usize, j: usize| Some(xs[i] + 2.0 * ys[j]);
+        let bounds = [0.0, 1.0, 2.5, 4.0, 5.5];
+        let filled = filled_contours(&xs, &ys, linear, &bounds);
+        for (b, polygons) in filled.bands.iter().enumerate() {
+            assert!(!polygons.is_empty(), "band {b} is drawn");
+            for &(x, y) in polygons.iter().flatten() {
+                let v = x + 2.0 * y;
+                assert!(
+                    v >= bounds[b] - 1e-12 && v <= bounds[b + 1] + 1e-12,
+                    "({x}, {y}) = {v} outside band {b}"
+                );
+            }
+        }
+        for (l, line) in filled.lines.iter().enumerate() {
+            assert!(!line.is_empty() && line.len().is_multiple_of(2));
+            for &(x, y) in line {
+                assert!((x + 2.0 * y - bounds[l + 1]).abs() < 1e-12);
+            }
+        }
+        // A missing corner leaves its four cells out.
+        let holed = |i: usize, j: usize| ((i, j) != (3, 2)).then(|| xs[i] + 2.0 * ys[j]);
+        let filled = filled_contours(&xs, &ys, holed, &bounds);
+        let total: f64 = filled.bands.iter().flatten().map(|p| area(p)).sum();
+        assert!((total - (2.5 * 1.5 - (1.6 - 0.5) * (0.9 - 0.2))).abs() < 1e-12);
     }
 
     #[test]

@@ -1,18 +1,25 @@
-//! Figures below and on the surface ([`halfplane::stress`], [`halfplane::fatigue`]): contour maps
-//! of a stress component and of a fatigue parameter with its critical point, and the surface
-//! profiles of `sxx` and Ruiz F2 over the cycle. Depth runs downwards: the y axis is `-z`.
+//! Figures below and on the surface ([`halfplane::stress`], [`halfplane::fatigue`]): filled maps
+//! of a stress component and of a fatigue parameter with a colour bar and the maximum marked, and
+//! the surface profiles of `sxx` and Ruiz F2 over the cycle. Depth runs downwards: the y axis is
+//! `-z`, drawn to the same scale as x.
 
-use crate::contour::{levels, segments, GridMap};
-use crate::{Figure, Legend, Panel, PlotError, Series, Style, Units};
+use crate::contour::GridMap;
+use crate::format::number;
+use crate::shading::{filled_map, Shading};
+use crate::{ColorBar, Figure, Legend, Panel, PlotError, Series, Style, Units};
 use halfplane::fatigue::{FatigueResult, Parameter};
 
-/// The palette colours of the contour levels, lowest first: every colour but black (3), which
-/// marks the contact and the line method's line, red (1), which marks the maximum, and grey (7),
-/// which outlines the grid.
-const LEVEL_COLORS: [usize; 7] = [0, 6, 2, 8, 5, 4, 9];
+/// The palette colour of the marked maximum (black, with a white ring: it reads on every band).
+const MAXIMUM_COLOR: usize = 3;
 
-/// The contour lines of `map`, one series per level named `"{label} = {level}{unit}"`.
-fn contours(map: &GridMap, label: &str, unit: &str) -> Result<Vec<Series>, PlotError> {
+/// The filled map of `map` below the surface (plot y = −z) with its colour bar labelled
+/// `label`; errors for a grid that is not one or a field with no finite value.
+fn field_map(
+    map: &GridMap,
+    name: &str,
+    label: String,
+    shading: Shading,
+) -> Result<(Vec<Series>, ColorBar), PlotError> {
     if !map.is_consistent() {
         return Err(PlotError::Request(format!(
             "a map needs at least 2 x 2 points and one value per point: {} x, {} z, {} values",
@@ -21,42 +28,67 @@ fn contours(map: &GridMap, label: &str, unit: &str) -> Result<Vec<Series>, PlotE
             map.values.len()
         )));
     }
-    let Some((lo, hi)) = map.range() else {
+    let Some(range) = map.range() else {
         return Err(PlotError::Request(format!(
-            "{label} has no finite value to draw"
+            "{name} has no finite value to draw"
         )));
     };
-    let (levels, decimals) = levels(lo, hi, LEVEL_COLORS.len());
-    let mut series: Vec<Series> = levels
-        .iter()
-        .zip(LEVEL_COLORS)
-        .map(|(&level, color)| Series {
-            name: format!("{label} = {level:.decimals$}{unit}").replace('-', "−"),
-            style: Style::Segments,
-            color,
-            pieces: vec![segments(map, level)],
-        })
-        .filter(|s| s.pieces[0].len() >= 2)
-        .collect();
-    // The grid's outline, so the figure spans all of it (not only where lines run).
-    let (x0, x1) = (map.x[0], map.x[map.x.len() - 1]);
-    let (z0, z1) = (map.z[0], map.z[map.z.len() - 1]);
-    series.push(Series::new(
-        "evaluation grid",
-        Style::Dashed,
-        7,
-        vec![(x0, -z0), (x1, -z0), (x1, -z1), (x0, -z1), (x0, -z0)],
-    ));
-    Ok(series)
+    let nx = map.x.len();
+    let value = |i: usize, j: usize| Some(map.values[j * nx + i]).filter(|v| v.is_finite());
+    Ok(filled_map(
+        (map.x, map.z),
+        value,
+        range,
+        shading,
+        label,
+        |(x, z)| (x, -z),
+    ))
+}
+
+/// The largest (`largest`) or smallest finite value of the map and where it is, `(x, z, value)`.
+fn extreme(map: &GridMap, largest: bool) -> Option<(f64, f64, f64)> {
+    let nx = map.x.len();
+    let finite = map.values.iter().enumerate().filter(|(_, v)| v.is_finite());
+    let found = if largest {
+        finite.max_by(|a, b| a.1.total_cmp(b.1))
+    } else {
+        finite.min_by(|a, b| a.1.total_cmp(b.1))
+    };
+    found.map(|(k, &v)| (map.x[k % nx], map.z[k / nx], v))
+}
+
+/// The marker of an extreme `value` (with its unit, leading space included) at (x, z), its text
+/// `"{what} {value} at (x, z) = ({x}, {z}) {length}{extra}"` written beside it.
+fn marked(
+    what: &str,
+    (x, z, value): (f64, f64, f64),
+    unit: &str,
+    units: &Units,
+    extra: &str,
+) -> Series {
+    Series::new(
+        format!(
+            "{what} {}{unit} at (x, z) = ({}, {}) {}{extra}",
+            number(value),
+            number(x),
+            number(z),
+            units.length
+        ),
+        Style::Annotated,
+        MAXIMUM_COLOR,
+        vec![(x, -z)],
+    )
 }
 
 fn depth_label(units: &Units) -> String {
     format!("−z, depth below the surface ({})", units.length)
 }
 
-/// The contour map of one stress component below the contact at increment `step`: `name` is the
-/// component as shown (for example "σxx"), `half_width` the contact half-width at that increment
-/// (the contact is drawn on the surface). The values are the caller's, in the stress unit.
+/// The filled map of one stress component below the contact at increment `step`, on a diverging
+/// colour map centred on zero (tension red, compression blue) with its colour bar, the contact on
+/// the surface and the largest and (when negative) the smallest value marked: `name` is the component as shown (for example
+/// "σxx"), `half_width` the contact half-width at that increment. The values are the caller's,
+/// in the stress unit; x and depth are drawn to the same scale.
 pub fn stress_map_figure(
     map: &GridMap,
     name: &str,
@@ -64,18 +96,29 @@ pub fn stress_map_figure(
     half_width: f64,
     units: &Units,
 ) -> Result<Figure, PlotError> {
-    let mut series = contours(map, name, &format!(" {}", units.stress))?;
+    let label = format!("{name} ({})", units.stress);
+    let (mut series, bar) = field_map(map, name, label, Shading::Diverging)?;
     series.push(Series::new(
         "contact −a ≤ x ≤ a",
         Style::Line,
         3,
         vec![(-half_width, 0.0), (half_width, 0.0)],
     ));
+    // Both extremes of a signed stress: the largest tension and the largest compression.
+    let unit = format!(" {}", units.stress);
+    if let Some(max) = extreme(map, true) {
+        series.push(marked("max", max, &unit, units, ""));
+    }
+    if let Some(min) = extreme(map, false).filter(|m| m.2 < 0.0) {
+        series.push(marked("min", min, &unit, units, ""));
+    }
     Ok(Figure {
         title: format!("{name} below the contact at increment {step}"),
         panels: vec![Panel {
             legend: Legend::Below,
-            title: format!("contours of {name} (tension positive)"),
+            color_bar: Some(bar),
+            equal_aspect: true,
+            title: format!("{name} (tension positive)"),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
             series,
@@ -127,7 +170,11 @@ pub fn fatigue_map_figure(
         }
         _ => String::new(),
     };
-    let mut series = contours(&map, name, &unit)?;
+    let label = match unit.trim() {
+        "" => name.to_string(),
+        u => format!("{name} ({u})"),
+    };
+    let (mut series, bar) = field_map(&map, name, label, Shading::Sequential)?;
     if let Some(l) = result.critical_distance {
         series.push(Series::new(
             "line method: 0 ≤ z ≤ 2L",
@@ -139,14 +186,12 @@ pub fn fatigue_map_figure(
     let plane = best
         .angle
         .map_or(String::new(), |a| format!(", plane {a:.1}°"));
-    series.push(Series::new(
-        format!(
-            "maximum {:.4e} at x = {:.4}, z = {:.4}{plane}",
-            best.value, best.x, best.z
-        ),
-        Style::Points,
-        1,
-        vec![(best.x, -best.z)],
+    series.push(marked(
+        "max",
+        (best.x, best.z, best.value),
+        &unit,
+        units,
+        &plane,
     ));
     Ok(Figure {
         title: format!(
@@ -156,7 +201,9 @@ pub fn fatigue_map_figure(
         ),
         panels: vec![Panel {
             legend: Legend::Below,
-            title: format!("contours of {name} ({})", parameter.name()),
+            color_bar: Some(bar),
+            equal_aspect: true,
+            title: format!("{name} ({})", parameter.name()),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
             series,
@@ -192,6 +239,7 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
         3,
         xy(&result.surface_sxx_max),
     ));
+    let f2_unit = format!("{}²·{}", units.stress, units.length);
     let mut f2 = vec![Series::new(
         "F2 = σxx,max |q|max δ",
         Style::Line,
@@ -200,7 +248,13 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
     )];
     if let Some(best) = result.parameter(Parameter::RuizF2) {
         f2.push(Series::new(
-            format!("maximum {:.4e} at x = {:.4}", best.value, best.x),
+            format!(
+                "maximum {} {} at x = {} {}",
+                number(best.value),
+                f2_unit,
+                number(best.x),
+                units.length
+            ),
             Style::Points,
             1,
             vec![(best.x, best.value)],
@@ -211,6 +265,8 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
         panels: vec![
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "surface σxx(x, 0)".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("σxx ({})", units.stress),
@@ -218,9 +274,11 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
             },
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "Ruiz F2 (δ the slip amplitude)".into(),
                 x_label: format!("position x ({})", units.length),
-                y_label: format!("F2 ({}·{}·{})", units.stress, units.stress, units.length),
+                y_label: format!("F2 ({f2_unit})"),
                 series: f2,
             },
         ],

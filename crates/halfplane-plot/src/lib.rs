@@ -1,8 +1,9 @@
 //! Figures for halfplane, drawn from the same numbers the library computes: the paper's load-space,
 //! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
-//! fields and zones, and contour maps of the stresses and fatigue parameters below the contact
-//! with the surface profiles of the cycle. SVG or PNG by file name, rendered in pure Rust with a bundled font.
-//! fields and zones, and design maps of a sweep's rows ([`design_map_figure`]). SVG or PNG by file name, rendered in pure Rust with a bundled font.
+//! fields and zones, filled maps of the stresses and fatigue parameters below the contact with
+//! the surface profiles of the cycle, and design maps of a sweep's rows ([`design_map_figure`]).
+//! SVG or PNG by file name, rendered in pure Rust with a bundled font. Maps are filled contours
+//! with a colour bar ([`ColorBar`]), numbers in plain notation ([`number`]).
 //!
 //! Each `*_figure` function returns a [`Figure`] (plain data: panels of named series) that
 //! [`write()`] renders, so callers and tests can inspect exactly what is drawn. The science behind
@@ -12,17 +13,20 @@
 
 mod contour;
 mod fields;
+mod format;
+mod map;
 mod matching;
 mod render;
+mod shading;
 
-pub use contour::{contour_segments, levels, GridMap};
+pub use contour::{contour_segments, filled_contours, levels, FilledContours, GridMap};
 pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
+pub use format::{level_labels, number};
+pub use map::{design_map_figure, DesignMap, MapColor};
 pub use matching::match_figure;
-mod map;
+pub use shading::{diverging, sequential};
 
-pub use map::{design_map_figure, sequential, DesignMap, MapColor};
-
-pub use render::{palette, render_svg, write, Figure, Legend, Panel, Series, Style};
+pub use render::{palette, render_svg, write, ColorBar, Figure, Legend, Panel, Series, Style};
 
 pub use halfplane::record::{FieldRecorder, MarchedCycle, StepFields};
 pub use halfplane::slip_map::SlipMap;
@@ -147,6 +151,8 @@ pub fn load_space_figure(
         panels: vec![
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "P–Q trajectory".into(),
                 x_label: format!("normal load P ({force})"),
                 y_label: format!("shear load Q ({force})"),
@@ -154,6 +160,8 @@ pub fn load_space_figure(
             },
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "P–S trajectories of the edges".into(),
                 x_label: format!("normal load P ({force})"),
                 y_label: format!("equivalent shear S ({force})"),
@@ -178,6 +186,8 @@ pub fn slip_map_figure(
         .into_iter()
         .map(|panel| Panel {
             legend: Legend::Auto,
+            color_bar: None,
+            equal_aspect: false,
             title: format!("f = {}", panel.friction),
             x_label: "ΔQ/(f P0)".into(),
             y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
@@ -270,6 +280,8 @@ pub fn evolution_figure(
         ));
         Panel {
             legend: Legend::Auto,
+            color_bar: None,
+            equal_aspect: false,
             title: if right {
                 "right edge: a and n".into()
             } else {
@@ -323,6 +335,8 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
         panels: vec![
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "shear traction".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("traction q ({})", units.stress),
@@ -330,6 +344,8 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
             },
             Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "accumulated slip".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("slip ({})", units.length),
@@ -339,8 +355,11 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
     }
 }
 
+/// The fill of stick zones: the palette's blue, lightened so the contact edges read over it.
+const STICK: (u8, u8, u8) = (140, 185, 230);
+
 /// Stick and slip zones against increment number: contact edges, and every stick interval as a
-/// vertical bar at its increment (the rest of the contact slips).
+/// filled cell one increment wide centred on its increment (the rest of the contact slips).
 pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
     let edges = |sign: f64| {
         result
@@ -353,16 +372,19 @@ pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
         .steps
         .iter()
         .flat_map(|s| {
-            s.stick_intervals
-                .iter()
-                .flat_map(move |&[l, r]| [(s.step as f64, l), (s.step as f64, r)])
+            s.stick_intervals.iter().flat_map(move |&[l, r]| {
+                let k = s.step as f64;
+                [(k - 0.5, l), (k + 0.5, r)]
+            })
         })
         .collect();
     Figure {
         title: "Time marching: stick and slip zones".into(),
         panels: vec![Panel {
             legend: Legend::Auto,
-            title: "stick intervals (bars); slip between them and the contact edges".into(),
+            color_bar: None,
+            equal_aspect: false,
+            title: "stick zones (filled); slip between them and the contact edges".into(),
             x_label: "increment".into(),
             y_label: format!("position x ({})", units.length),
             series: vec![
@@ -372,7 +394,7 @@ pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
                     color: 3,
                     pieces: vec![edges(1.0), edges(-1.0)],
                 },
-                Series::new("stick", Style::Segments, 0, bars),
+                Series::new("stick", Style::Filled(STICK), 0, bars),
             ],
         }],
     }

@@ -1,15 +1,15 @@
 //! Design maps: a sweep's rows drawn over two of its varied inputs, coloured by a regime (one
-//! colour per category) or by a number (filled bands between contour levels, with the contour
-//! lines drawn on top).
+//! colour per category) or by a number (filled contours with a colour bar).
 //!
-//! Rows that form a full grid over (x, y) are drawn as cells around each point (cell edges
-//! half-way between neighbouring values), and numeric maps get contour lines by marching squares
-//! with linear interpolation along cell edges (Lorensen & Cline 1987, in its two-dimensional
-//! form; a saddle cell is split by its centre value, the mean of its corners). Scattered rows (a
-//! random or Latin-hypercube sweep) are drawn as small squares, without contours.
+//! A regime map on a full grid over (x, y) is drawn as cells around each point (cell edges
+//! half-way between neighbouring values): a category is not interpolated. A numeric map on a
+//! full grid is drawn as filled contours between the points ([`crate::filled_contours`]: bands
+//! interpolated within each cell, so no staircase at cell edges) with the contour lines on top;
+//! rows without a value are grey cells. Scattered rows (a random or Latin-hypercube sweep) are
+//! drawn as small squares in their band's colour, without contours.
 
-use crate::contour::{contour_segments, levels};
-use crate::{Figure, Legend, Panel, PlotError, Series, Style};
+use crate::shading::{filled_map, Shading};
+use crate::{ColorBar, Figure, Legend, Panel, PlotError, Series, Style};
 
 /// The colour of each row: a category (a regime name) or a number (absent where the row has no
 /// value: gross sliding, or a failed case).
@@ -24,11 +24,11 @@ pub enum MapColor {
 /// The data of a design map.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DesignMap {
-    /// The x axis label (the varied path).
+    /// The x axis label: what the varied path is, with its unit.
     pub x_label: String,
     /// The y axis label.
     pub y_label: String,
-    /// What the colour shows (the column name).
+    /// What the colour shows, with its unit (the figure's title and the colour bar's label).
     pub color_label: String,
     /// (x, y) of each row.
     pub points: Vec<(f64, f64)>,
@@ -47,26 +47,6 @@ const OTHER_COLORS: [(u8, u8, u8); 4] =
     [(230, 140, 0), (150, 70, 170), (0, 160, 190), (140, 90, 40)];
 /// Cells without a value in a numeric map.
 const NO_VALUE: (u8, u8, u8) = (215, 215, 215);
-
-/// The viridis colour map at five stops (van der Walt & Smith, matplotlib 2.0), interpolated
-/// linearly: perceptually ordered and readable in grey and by colour-blind readers.
-const VIRIDIS: [(f64, f64, f64); 5] = [
-    (68.0, 1.0, 84.0),
-    (59.0, 82.0, 139.0),
-    (33.0, 145.0, 140.0),
-    (94.0, 201.0, 98.0),
-    (253.0, 231.0, 37.0),
-];
-
-/// The colour at fraction `t` (0 to 1) of the colour map.
-pub fn sequential(t: f64) -> (u8, u8, u8) {
-    let t = t.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
-    let i = (t.floor() as usize).min(VIRIDIS.len() - 2);
-    let f = t - i as f64;
-    let (a, b) = (VIRIDIS[i], VIRIDIS[i + 1]);
-    let mix = |p: f64, q: f64| (p + (q - p) * f).round() as u8;
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
-}
 
 /// The sorted distinct values of `v`.
 fn distinct(v: impl Iterator<Item = f64>) -> Vec<f64> {
@@ -153,17 +133,6 @@ fn filled(name: String, rgb: (u8, u8, u8), rects: Vec<[(f64, f64); 2]>) -> Serie
     }
 }
 
-/// Formats a level for the legend: the fewest significant digits that tell the levels apart.
-fn label(v: f64) -> String {
-    let s = format!("{v:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.to_string()
-    }
-}
-
 /// The design map: one panel, cells coloured by category or by band, contours for a numeric
 /// colour on a grid. The legend (below the panel) names each category or band.
 ///
@@ -193,10 +162,8 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
     }
     let (rects, grid) = cells(&map.points);
     let mut series = Vec::new();
-    let mut title = format!(
-        "{} over {} and {}",
-        map.color_label, map.x_label, map.y_label
-    );
+    let mut title = map.color_label.clone();
+    let mut color_bar = None;
     match &map.color {
         MapColor::Category(names) => {
             let mut seen: Vec<&str> = Vec::new();
@@ -241,40 +208,9 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
             let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
                 (a.min(v), b.max(v))
             });
-            let (levels, _) = levels(lo, hi, 8);
-            let bounds: Vec<f64> = if lo.is_finite() {
-                std::iter::once(lo)
-                    .chain(levels.iter().copied())
-                    .chain(std::iter::once(hi))
-                    .collect()
-            } else {
-                Vec::new()
-            };
-            let bands = bounds
-                .len()
-                .saturating_sub(1)
-                .max(usize::from(lo.is_finite()));
-            let band = |v: f64| levels.iter().filter(|&&l| v >= l).count();
-            for b in 0..bands {
-                let mine: Vec<[(f64, f64); 2]> = values
-                    .iter()
-                    .zip(&rects)
-                    .filter(|(v, _)| v.is_some_and(|v| v.is_finite() && band(v) == b))
-                    .map(|(_, r)| *r)
-                    .collect();
-                if mine.is_empty() {
-                    continue;
-                }
-                let t = if bands > 1 {
-                    b as f64 / (bands - 1) as f64
-                } else {
-                    0.5
-                };
-                let name = match bounds.get(b + 1) {
-                    Some(&top) => format!("{} to {}", label(bounds[b]), label(top)),
-                    None => label(lo),
-                };
-                series.push(filled(name, sequential(t), mine));
+            if lo.is_finite() {
+                let bar = numeric(map, values, &rects, grid.as_ref(), (lo, hi), &mut series);
+                color_bar = Some(bar);
             }
             let missing: Vec<[(f64, f64); 2]> = values
                 .iter()
@@ -285,23 +221,8 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
             if !missing.is_empty() {
                 series.push(filled("no value".into(), NO_VALUE, missing));
             }
-            match &grid {
-                Some(g) => {
-                    let value = |ix: usize, iy: usize| {
-                        values[g.row[iy * g.xs.len() + ix]].filter(|v| v.is_finite())
-                    };
-                    let mut segments = Vec::new();
-                    for &level in &levels {
-                        for (a, b) in contour_segments(&g.xs, &g.ys, value, level) {
-                            segments.push(a);
-                            segments.push(b);
-                        }
-                    }
-                    if !segments.is_empty() {
-                        series.push(Series::new("contours", Style::Segments, 3, segments));
-                    }
-                }
-                None => title.push_str(" (scattered rows: no contours)"),
+            if grid.is_none() {
+                title.push_str(" (scattered rows: no contours)");
             }
         }
     }
@@ -309,12 +230,54 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
         title,
         panels: vec![Panel {
             legend: Legend::Below,
+            color_bar,
+            equal_aspect: false,
             title: String::new(),
             x_label: map.x_label.clone(),
             y_label: map.y_label.clone(),
             series,
         }],
     })
+}
+
+/// The numeric colour of the rows with a value: filled contours on a grid of at least 2 x 2
+/// points, else each row's cell in its band's colour; pushed to `series`, and the colour bar.
+fn numeric(
+    map: &DesignMap,
+    values: &[Option<f64>],
+    rects: &[[(f64, f64); 2]],
+    grid: Option<&Grid>,
+    range: (f64, f64),
+    series: &mut Vec<Series>,
+) -> ColorBar {
+    let label = map.color_label.clone();
+    let (xs, ys): (&[f64], &[f64]) = match grid {
+        Some(g) if g.xs.len() >= 2 && g.ys.len() >= 2 => (&g.xs, &g.ys),
+        _ => (&[], &[]),
+    };
+    let value = |ix: usize, iy: usize| {
+        grid.and_then(|g| values[g.row[iy * g.xs.len() + ix]])
+            .filter(|v| v.is_finite())
+    };
+    let (bands, bar) = filled_map((xs, ys), value, range, Shading::Sequential, label, |p| p);
+    if xs.is_empty() {
+        // No cells to interpolate in: each row's own cell in its band's colour.
+        let band = |v: f64| bar.ticks.iter().filter(|(l, _)| v >= *l).count();
+        for (b, &rgb) in bar.colors.iter().enumerate() {
+            let mine: Vec<[(f64, f64); 2]> = values
+                .iter()
+                .zip(rects)
+                .filter(|(v, _)| v.is_some_and(|v| v.is_finite() && band(v) == b))
+                .map(|(_, r)| *r)
+                .collect();
+            if !mine.is_empty() {
+                series.push(filled(String::new(), rgb, mine));
+            }
+        }
+    } else {
+        series.extend(bands);
+    }
+    bar
 }
 
 #[cfg(test)]

@@ -55,6 +55,8 @@ pub fn match_figure(report: &MatchReport, units: &Units) -> Result<Figure, PlotE
         ));
         Ok(Panel {
             legend: Legend::Auto,
+            color_bar: None,
+            equal_aspect: false,
             title: format!("{name}: {}", kind(side)),
             x_label: format!("normal load P ({force})"),
             y_label: format!("shear Q, equivalent shear S ({force})"),

@@ -158,6 +158,31 @@ fn check_drawn(f: &Figure, svg: &str) {
                     .count();
                 assert!(drawn >= n, "{:?}: {drawn} cells for {n}", s.name);
             }
+            Style::Polygons((r, g, b)) => {
+                let fill = format!("#{r:02X}{g:02X}{b:02X}");
+                let n = s.pieces.iter().filter(|p| p.len() >= 3).count();
+                let drawn = elements(svg, "polygon")
+                    .iter()
+                    .filter(|c| attribute(c, "fill") == fill)
+                    .count();
+                assert!(drawn >= n, "{fill}: {drawn} polygons for {n}");
+            }
+            Style::Contour => {
+                let n: usize = s.pieces.iter().map(|p| p.len() / 2).sum();
+                let drawn = lines
+                    .iter()
+                    .filter(|l| l.stroke == "#000000" && l.width == "1" && l.points == 2)
+                    .count();
+                assert!(drawn >= n, "{drawn} contour segments for {n}");
+            }
+            Style::Annotated => {
+                let n: usize = s.pieces.iter().map(Vec::len).sum();
+                let drawn = circles
+                    .iter()
+                    .filter(|c| attribute(c, "fill") == color)
+                    .count();
+                assert!(drawn >= n, "{:?}: {drawn} markers for {n} points", s.name);
+            }
         }
     }
 }
@@ -460,41 +485,113 @@ fn match_figure_draws_both_sides_with_the_reports_edge_shears() {
 }
 
 #[test]
-fn a_design_map_draws_every_cell_its_bands_and_contours() {
+fn a_design_map_fills_its_grid_between_the_points_and_greys_the_rows_without_a_value() {
     use halfplane_plot::{design_map_figure, DesignMap, MapColor};
     // v = x y on a 20 x 10 grid, with the last two columns missing (as gross sliding would be).
     let points: Vec<(f64, f64)> = (0..20)
         .flat_map(|i| (0..10).map(move |j| (i as f64, 0.1 * j as f64)))
         .collect();
-    let values = points
+    let values: Vec<Option<f64>> = points
         .iter()
         .map(|&(x, y)| (x < 18.0).then_some(x * y))
         .collect();
     let map = DesignMap {
-        x_label: "cycle.point2.shear".into(),
-        y_label: "friction.coefficient".into(),
-        color_label: "slip_right_1".into(),
+        x_label: "shear load Q at point 2 (N/mm)".into(),
+        y_label: "friction coefficient f".into(),
+        color_label: "right slip zone at point 1 (mm)".into(),
         points,
         color: MapColor::Numeric(values),
     };
     let f = design_map_figure(&map).unwrap();
-    check_svg(&f);
-    let series = &f.panels[0].series;
-    let cells: usize = series
+    let svg = check_svg(&f);
+    let panel = &f.panels[0];
+    // The filled bands cover the 18 columns with values, between the points: 17 x 0.9 (to
+    // rounding, 1e-9 of it), with no staircase (they are not the rows' cells).
+    let area = |p: &[(f64, f64)]| {
+        0.5 * (0..p.len())
+            .map(|k| {
+                let (a, b) = (p[k], p[(k + 1) % p.len()]);
+                a.0 * b.1 - b.0 * a.1
+            })
+            .sum::<f64>()
+            .abs()
+    };
+    let filled: f64 = panel
+        .series
         .iter()
-        .filter(|s| matches!(s.style, Style::Filled(_)))
-        .map(|s| s.pieces[0].len() / 2)
+        .filter(|s| matches!(s.style, Style::Polygons(_)))
+        .flat_map(|s| &s.pieces)
+        .map(|p| area(p))
         .sum();
-    assert_eq!(cells, 200, "every row is one cell");
-    let n = names(&f);
+    assert!((filled - 17.0 * 0.9).abs() < 1e-9, "filled {filled}");
+    // The colour bar spans the data: 0 to 17 x 0.9.
+    let bar = panel.color_bar.as_ref().unwrap();
+    assert_eq!(bar.bounds[0], 0.0);
+    assert!((bar.bounds[bar.bounds.len() - 1] - 17.0 * 0.9).abs() < 1e-12);
+    // The bar is drawn: its label, every level's label as a text of its own, and one rectangle
+    // per band in the band's colour.
+    let labels = texts(&svg);
     assert!(
-        n.contains(&"contours".to_string()) && n.contains(&"no value".to_string()),
-        "{n:?}"
+        labels.contains(&bar.label.as_str()),
+        "colour bar label drawn"
     );
-    let missing = series.iter().find(|s| s.name == "no value").unwrap();
+    for (_, label) in &bar.ticks {
+        assert!(
+            labels.contains(&label.as_str()),
+            "level {label} not labelled"
+        );
+    }
+    let rects = elements(&svg, "rect");
+    for &(r, g, b) in &bar.colors {
+        let fill = format!("#{r:02X}{g:02X}{b:02X}");
+        assert!(
+            rects.iter().any(|e| attribute(e, "fill") == fill),
+            "band {fill} missing from the bar"
+        );
+    }
+    let missing = panel.series.iter().find(|s| s.name == "no value").unwrap();
     assert_eq!(
         missing.pieces[0].len() / 2,
         20,
         "two columns of ten have no value"
+    );
+    assert!(svg.contains("shear load Q at point 2 (N/mm)"));
+}
+
+#[test]
+fn annotations_of_nearby_markers_do_not_cover_each_other() {
+    // Two marked values a few pixels apart on the surface of a map (as the largest tension and
+    // compression of a stress can be): their labels go to different places, not one on the
+    // other (they overlapped before the labels were placed apart).
+    let mut panel = Panel::new(
+        "",
+        "x (mm)",
+        "y (mm)",
+        vec![
+            Series::new("", Style::Line, 3, vec![(0.0, -1.0), (1.0, 0.0)]),
+            Series::new("max 780.5 MPa", Style::Annotated, 3, vec![(0.2, 0.0)]),
+            Series::new("min −843.5 MPa", Style::Annotated, 3, vec![(0.25, 0.0)]),
+        ],
+    );
+    panel.legend = Legend::Below;
+    let f = Figure {
+        title: "t".into(),
+        panels: vec![panel],
+    };
+    let svg = check_svg(&f);
+    let at = |label: &str| {
+        let start = svg.find(&format!(">\n{label}")).unwrap_or_else(|| {
+            svg.find(&format!(">{label}"))
+                .unwrap_or_else(|| panic!("{label} not drawn"))
+        });
+        let element = &svg[svg[..start].rfind("<text").unwrap()..start];
+        let number = |name: &str| attribute(element, name).parse::<i32>().unwrap();
+        (number("x"), number("y"))
+    };
+    let (a, b) = (at("max 780.5 MPa"), at("min −843.5 MPa"));
+    // Labels are 13-px text: apart by a line's height, or side by side without overlap.
+    assert!(
+        (a.1 - b.1).abs() >= 16 || (a.0 - b.0).abs() >= 120,
+        "labels at {a:?} and {b:?}"
     );
 }

@@ -1,6 +1,6 @@
-//! The stress and fatigue figures hold the library's numbers: contour lines where the field takes
-//! their level, the maximum where the analysis put it, the surface profiles as computed; bad
-//! requests are errors.
+//! The stress and fatigue figures hold the library's numbers: filled bands covering the grid,
+//! contour lines where the field takes their level, a colour bar over the data's range, the
+//! maximum where the analysis put it, the surface profiles as computed; bad requests are errors.
 
 use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, Parameter};
 use halfplane::history::{History, Ramp};
@@ -8,23 +8,28 @@ use halfplane::march::MarchOptions;
 use halfplane::{reference, LoadPoint};
 use halfplane_plot::*;
 
-/// The level a contour series is drawn at, read back from its name "... = {level} unit".
-fn level(s: &Series) -> f64 {
-    let text = s.name.split(" = ").nth(1).unwrap().replace('−', "-");
-    text.split_whitespace().next().unwrap().parse().unwrap()
+/// The area of a polygon (shoelace formula), unsigned.
+fn area(p: &[(f64, f64)]) -> f64 {
+    0.5 * (0..p.len())
+        .map(|k| {
+            let (a, b) = (p[k], p[(k + 1) % p.len()]);
+            a.0 * b.1 - b.0 * a.1
+        })
+        .sum::<f64>()
+        .abs()
 }
 
-fn contour_series(f: &Figure) -> Vec<&Series> {
+fn styled(f: &Figure, style: fn(&Style) -> bool) -> Vec<&Series> {
     f.panels[0]
         .series
         .iter()
-        .filter(|s| s.style == Style::Segments)
+        .filter(|s| style(&s.style))
         .collect()
 }
 
 #[test]
-fn stress_map_contours_lie_where_the_field_takes_their_level() {
-    // sxx = 100 x - 50 z (linear, so interpolation along cell edges is exact).
+fn stress_map_bands_cover_the_grid_and_its_lines_lie_on_the_bar_levels() {
+    // sxx = 100 x - 50 z (linear, so the interpolation within each cell is exact).
     let x: Vec<f64> = (0..21).map(|i| -1.0 + 0.1 * i as f64).collect();
     let z: Vec<f64> = (0..11).map(|j| 0.1 * j as f64).collect();
     let values: Vec<f64> = z
@@ -37,28 +42,69 @@ fn stress_map_contours_lie_where_the_field_takes_their_level() {
         values: &values,
     };
     let f = stress_map_figure(&map, "σxx", 7, 0.8, &Units::default()).unwrap();
-    let lines = contour_series(&f);
-    assert_eq!(lines.len(), 4, "levels -100, -50, 0, 50");
-    for s in &lines {
-        let l = level(s);
-        assert!((-150.0..100.0).contains(&l));
+    let panel = &f.panels[0];
+    assert!(panel.equal_aspect, "x and depth to the same scale");
+    // The colour bar spans the data, -150 (x = -1, z = 1) to 100 (x = 1, z = 0), with the
+    // levels every 25 (at most ten) labelled in plain notation.
+    let bar = panel.color_bar.as_ref().unwrap();
+    assert_eq!(bar.label, "σxx (MPa)");
+    let bounds: Vec<f64> = (-6..=4).map(|k| 25.0 * k as f64).collect();
+    assert_eq!(bar.bounds, bounds);
+    let labels: Vec<&str> = bar.ticks.iter().map(|t| t.1.as_str()).collect();
+    assert_eq!(
+        labels,
+        ["−125", "−100", "−75", "−50", "−25", "0", "25", "50", "75"]
+    );
+    // Diverging and centred on zero: blue below zero, red above.
+    let (first, last) = (bar.colors[0], bar.colors[9]);
+    assert!(first.2 > first.0 && last.0 > last.2);
+    // The bands tile the 2 x 1 grid (to rounding, 1e-12 of it), each polygon inside its band.
+    let bands = styled(&f, |s| matches!(s, Style::Polygons(_)));
+    let total: f64 = bands.iter().flat_map(|s| &s.pieces).map(|p| area(p)).sum();
+    assert!((total - 2.0).abs() < 1e-12, "covered {total}");
+    for s in &bands {
+        let Style::Polygons(rgb) = s.style else {
+            unreachable!()
+        };
+        let b = bar.colors.iter().position(|&c| c == rgb).unwrap();
         for &(px, py) in s.pieces.iter().flatten() {
-            // The plot's y is -z.
             let v = 100.0 * px + 50.0 * py;
-            assert!(
-                (v - l).abs() < 1e-9,
-                "{}: point ({px}, {py}) has {v}",
-                s.name
-            );
+            assert!(v >= bar.bounds[b] - 1e-9 && v <= bar.bounds[b + 1] + 1e-9);
         }
     }
-    let contact = f.panels[0]
+    // Every contour point lies on a level (the plot's y is -z).
+    let lines = styled(&f, |s| *s == Style::Contour);
+    assert_eq!(lines.len(), 1);
+    for &(px, py) in lines[0].pieces.iter().flatten() {
+        let v = 100.0 * px + 50.0 * py;
+        assert!(
+            bar.ticks.iter().any(|(l, _)| (v - l).abs() < 1e-9),
+            "({px}, {py}) has {v}, on no level"
+        );
+    }
+    // The maximum, 100 at x = 1 on the surface, and the minimum, -150 at x = -1 at the bottom,
+    // are marked with their values.
+    let marks = styled(&f, |s| *s == Style::Annotated);
+    assert_eq!(marks.len(), 2);
+    assert_eq!(marks[0].pieces[0], vec![(1.0, 0.0)]);
+    assert!(marks[0]
+        .name
+        .starts_with("max 100 MPa at (x, z) = (1, 0) mm"));
+    assert_eq!(marks[1].pieces[0], vec![(-1.0, -1.0)]);
+    assert!(marks[1]
+        .name
+        .starts_with("min −150 MPa at (x, z) = (−1, 1) mm"));
+    let contact = panel
         .series
         .iter()
         .find(|s| s.name.starts_with("contact"))
         .unwrap();
     assert_eq!(contact.pieces[0], vec![(-0.8, 0.0), (0.8, 0.0)]);
-    render_svg(&f).unwrap();
+    let (svg, (width, height)) = render_svg(&f).unwrap();
+    assert!(svg.contains("σxx (MPa)") && svg.contains("max 100 MPa"));
+    // Equal aspect: a 2 x 1.03 map (3 % above the surface) on a 900-pixel-wide panel is much
+    // wider than tall.
+    assert!(width > 2 * height - 200, "{width} x {height}");
     // One value short: an error, not a panic.
     let short = GridMap {
         values: &values[1..],
@@ -101,10 +147,10 @@ fn fatigue_figures_show_the_analysis_maximum_and_profiles() {
         let marked = f.panels[0]
             .series
             .iter()
-            .find(|s| s.style == Style::Points)
+            .find(|s| s.style == Style::Annotated)
             .unwrap();
         assert_eq!(marked.pieces[0], vec![(best.x, -best.z)]);
-        assert!(marked.name.contains(&format!("{:.4e}", best.value)));
+        assert!(marked.name.contains(&format!("max {}", number(best.value))));
         let map = result.map(parameter).unwrap();
         let (lo, hi) = map
             .iter()
@@ -112,11 +158,17 @@ fn fatigue_figures_show_the_analysis_maximum_and_profiles() {
                 (a.min(v), b.max(v))
             });
         assert_eq!(hi, best.value, "the map's maximum is the reported one");
-        let lines = contour_series(&f);
-        assert!(!lines.is_empty());
-        for s in lines {
-            assert!(level(s) > lo && level(s) < hi, "{} outside the map", s.name);
-        }
+        let bar = f.panels[0].color_bar.as_ref().unwrap();
+        assert_eq!(
+            bar.bounds[0], lo,
+            "the colour bar starts at the map's minimum"
+        );
+        assert_eq!(
+            bar.bounds[bar.bounds.len() - 1],
+            hi,
+            "and ends at its maximum"
+        );
+        assert!(bar.ticks.iter().all(|(l, _)| *l > lo && *l < hi));
         render_svg(&f).unwrap();
     }
     // Not evaluated: Crossland without its constant, and Ruiz (a surface value, no map).

@@ -1,5 +1,5 @@
 //! `halfplane plot design-map`: a sweep's output drawn over two of its varied paths, coloured by
-//! regime or by any numeric column (with contours).
+//! regime or by any numeric column (filled contours), axes labelled in words with units.
 
 use crate::args::DesignMapArgs;
 use crate::output::note;
@@ -11,6 +11,70 @@ use std::path::PathBuf;
 /// Relative tolerance of `--where PATH=VALUE`: the sweep wrote the value in full, so only
 /// rounding in a hand-typed value needs room.
 const WHERE_TOLERANCE: f64 = 1e-9;
+
+/// The unit names the map's labels show: a sweep's output does not record the case's `[units]`,
+/// so the labels name the defaults (N, mm, MPa).
+const FORCE_PER_LENGTH: &str = "N/mm";
+const LENGTH: &str = "mm";
+const STRESS: &str = "MPa";
+
+/// What a sweep's column is, in words with its unit, for an axis or colour-bar label: the varied
+/// paths a sweep takes (`cycle.point2.shear`: "shear load Q at point 2 (N/mm)") and the columns
+/// it writes (`slip_right_1`: "right slip zone at point 1 (mm)"). A column not in the table is
+/// shown by its name.
+pub fn describe(column: &str) -> String {
+    let with = |name: &str, unit: &str| match unit {
+        "" => name.to_string(),
+        u => format!("{name} ({u})"),
+    };
+    let per_point = |name: &str, n: &str, unit: &str| with(&format!("{name} at point {n}"), unit);
+    let keys: Vec<&str> = column.split('.').collect();
+    match keys.as_slice() {
+        ["cycle", point, part] if point.starts_with("point") => {
+            let n = &point["point".len()..];
+            match *part {
+                "normal" => per_point("normal load P", n, FORCE_PER_LENGTH),
+                "shear" => per_point("shear load Q", n, FORCE_PER_LENGTH),
+                "bulk" => per_point("bulk stress σ", n, STRESS),
+                _ => column.to_string(),
+            }
+        }
+        ["material", "youngs_modulus"] => with("Young's modulus E", STRESS),
+        ["material", "poisson_ratio"] => with("Poisson's ratio ν", ""),
+        ["friction", "coefficient"] => with("friction coefficient f", ""),
+        ["profile", "radius"] => with("radius R", LENGTH),
+        ["profile", "flat_half_width"] => with("flat half-width b", LENGTH),
+        ["profile", "coefficient"] => with("power-law coefficient B", ""),
+        ["profile", "exponent"] => with("power-law exponent k", ""),
+        ["regime"] => "regime".into(),
+        ["stick_left"] => with("stick zone left end", LENGTH),
+        ["stick_right"] => with("stick zone right end", LENGTH),
+        ["final_stick_left"] => with("final stick zone left end", LENGTH),
+        ["final_stick_right"] => with("final stick zone right end", LENGTH),
+        ["max_slip_amplitude"] => with("largest slip amplitude", LENGTH),
+        ["energy"] => with(
+            "energy dissipated in the last cycle",
+            &format!("N {LENGTH}/{LENGTH}"),
+        ),
+        ["shakedown_cycle"] => "shakedown cycle".into(),
+        ["cycles_run"] => "cycles run".into(),
+        ["steady_change"] => "change of the slip ranges in the last cycle".into(),
+        ["steady_converged"] => "steady state reached (1 yes, 0 no)".into(),
+        [one] => {
+            let (name, n) = match one.rsplit_once('_') {
+                Some((name, n @ ("1" | "2"))) => (name, n),
+                _ => return column.to_string(),
+            };
+            match name {
+                "half_width" => per_point("contact half-width a", n, LENGTH),
+                "slip_left" => per_point("left slip zone", n, LENGTH),
+                "slip_right" => per_point("right slip zone", n, LENGTH),
+                _ => column.to_string(),
+            }
+        }
+        _ => column.to_string(),
+    }
+}
 
 /// What `design-map` draws and where.
 #[derive(Debug, Clone)]
@@ -180,9 +244,9 @@ impl DesignMapConfig {
         let color = color(args, &table, &keep)?;
         Ok(Self {
             map: DesignMap {
-                x_label: args.x.clone(),
-                y_label: args.y.clone(),
-                color_label: args.color.clone(),
+                x_label: describe(&args.x),
+                y_label: describe(&args.y),
+                color_label: describe(&args.color),
                 points,
                 color,
             },
@@ -197,4 +261,30 @@ pub fn run(config: &DesignMapConfig) -> Result<()> {
     halfplane_plot::write(&figure, &config.output)?;
     note(&format!("wrote {}", config.output.display()));
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_are_described_in_words_with_their_units() {
+        for (column, want) in [
+            ("cycle.point2.shear", "shear load Q at point 2 (N/mm)"),
+            ("cycle.point1.normal", "normal load P at point 1 (N/mm)"),
+            ("cycle.point1.bulk", "bulk stress σ at point 1 (MPa)"),
+            ("friction.coefficient", "friction coefficient f"),
+            ("profile.radius", "radius R (mm)"),
+            ("material.youngs_modulus", "Young's modulus E (MPa)"),
+            ("slip_right_1", "right slip zone at point 1 (mm)"),
+            ("half_width_2", "contact half-width a at point 2 (mm)"),
+            ("energy", "energy dissipated in the last cycle (N mm/mm)"),
+            ("regime", "regime"),
+            // Not in the table: the name as given.
+            ("solver.cells", "solver.cells"),
+            ("slip_right_3", "slip_right_3"),
+        ] {
+            assert_eq!(describe(column), want, "{column}");
+        }
+    }
 }

@@ -269,7 +269,7 @@ fn cyclic(case: &Case) -> Result<History> {
 }
 
 /// The stress map: march to the increment, evaluate the component on a grid over
-/// `+/-1.5 a` and down to `a` (`a` the half-width there) and draw its contours.
+/// `+/-1.5 a` and down to `a` (`a` the half-width there) and draw it as a filled map.
 fn stress_map(
     contact: &Contact,
     history: &History,

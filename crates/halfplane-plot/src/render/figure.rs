@@ -15,6 +15,28 @@ pub enum Style {
     /// Filled rectangles in this colour (RGB), whatever the palette index: consecutive pairs of
     /// points are opposite corners (cells of a map).
     Filled((u8, u8, u8)),
+    /// Filled polygons in this colour (RGB), whatever the palette index: each piece is one
+    /// polygon's corners (a band of a filled contour map).
+    Polygons((u8, u8, u8)),
+    /// Thin dark contour lines: disjoint segments (consecutive pairs of points), drawn over
+    /// filled bands.
+    Contour,
+    /// A marker with the series' name written beside it in the plotting area (not in the
+    /// legend), placed where it stays inside: a value marked on a map.
+    Annotated,
+}
+
+/// A colour bar beside a panel: the bands of a filled map, their colours and the labelled levels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ColorBar {
+    /// What the colours show, with its unit (written along the bar).
+    pub label: String,
+    /// The bands' edges, increasing: the data's smallest value, the levels, its largest value.
+    pub bounds: Vec<f64>,
+    /// One colour per band (RGB), `bounds.len() - 1` of them.
+    pub colors: Vec<(u8, u8, u8)>,
+    /// The labelled values (the levels) and their labels.
+    pub ticks: Vec<(f64, String)>,
 }
 
 /// A named data series; `pieces` are drawn separately (gaps between them) under one legend entry.
@@ -79,6 +101,31 @@ pub struct Panel {
     pub y_label: String,
     /// The series.
     pub series: Vec<Series>,
+    /// The colour bar of a filled map, drawn to the right of the plotting area.
+    pub color_bar: Option<ColorBar>,
+    /// Whether a unit of x and of y are the same length on the page (a map of a cross-section).
+    pub equal_aspect: bool,
+}
+
+impl Panel {
+    /// A panel of these series with the legend placed automatically, no colour bar and free
+    /// aspect.
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+        series: Vec<Series>,
+    ) -> Self {
+        Self {
+            legend: Legend::Auto,
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            series,
+            color_bar: None,
+            equal_aspect: false,
+        }
+    }
 }
 
 /// A whole figure: a title and panels side by side.

@@ -1,7 +1,7 @@
 //! Legend placement: which entries a panel's legend has and where it goes, a free corner of the
 //! plotting area or the strip below the panel.
 
-use super::axes::chart;
+use super::axes::{aspect_height, chart, plot_pixels, split_bar};
 use super::figure::{Figure, Legend, Series, Style};
 use super::font::FAMILY;
 use super::{draw_error, INSET, LEGEND_FONT, PAD, ROW, SAMPLE};
@@ -21,6 +21,9 @@ pub(super) enum Placement {
 pub(super) struct LegendPlan<'f> {
     pub(super) entries: Vec<&'f Series>,
     pub(super) place: Placement,
+    /// How much taller (or, negative, shorter) the plotting area must be for equal x and y
+    /// scales, in pixels (`None`: free aspect).
+    pub(super) aspect_change: Option<i32>,
 }
 
 /// Decides every panel's legend placement on a throwaway drawing of the same geometry, by mapping
@@ -35,7 +38,11 @@ pub(super) fn plan(figure: &Figure, size: (u32, u32)) -> Result<Vec<LegendPlan<'
     let font = TextStyle::from((FAMILY, LEGEND_FONT).into_font());
     let mut plans = Vec::new();
     for (area, panel) in areas.iter().zip(&figure.panels) {
-        let entries: Vec<&Series> = panel.series.iter().filter(|s| !s.name.is_empty()).collect();
+        let entries: Vec<&Series> = panel
+            .series
+            .iter()
+            .filter(|s| !s.name.is_empty() && !matches!(s.style, Style::Annotated))
+            .collect();
         let text_width = entries
             .iter()
             .map(|s| {
@@ -49,7 +56,10 @@ pub(super) fn plan(figure: &Figure, size: (u32, u32)) -> Result<Vec<LegendPlan<'
             .unwrap_or(0);
         let entry_width = SAMPLE + PAD + text_width;
         let box_size = (entry_width + 2 * PAD, entries.len() as i32 * ROW + 2 * PAD);
-        let chart = chart(area, panel)?;
+        let (plot_area, _) = split_bar(area, panel);
+        let (width, height) = plot_pixels(plot_area.dim_in_pixel(), panel)?;
+        let aspect_change = aspect_height(panel, width).map(|h| h - height);
+        let chart = chart(&plot_area, panel)?;
         let (xr, yr) = chart.plotting_area().get_pixel_range();
         let corner = |c: Legend| -> (i32, i32) {
             let x = match c {
@@ -77,8 +87,19 @@ pub(super) fn plan(figure: &Figure, size: (u32, u32)) -> Result<Vec<LegendPlan<'
                 s.pieces.iter().any(|piece| {
                     let pts: Vec<(f64, f64)> = piece.iter().map(px).collect();
                     match s.style {
-                        Style::Points => pts.iter().any(|&p| crosses(p, p, rect, 4.0)),
-                        Style::Segments => {
+                        Style::Points | Style::Annotated => {
+                            pts.iter().any(|&p| crosses(p, p, rect, 4.0))
+                        }
+                        Style::Polygons(_) => {
+                            let (mut x0, mut y0) = (f64::INFINITY, f64::INFINITY);
+                            let (mut x1, mut y1) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+                            for p in &pts {
+                                (x0, y0, x1, y1) =
+                                    (x0.min(p.0), y0.min(p.1), x1.max(p.0), y1.max(p.1));
+                            }
+                            x0 <= rect.2 && x1 >= rect.0 && y0 <= rect.3 && y1 >= rect.1
+                        }
+                        Style::Segments | Style::Contour => {
                             pts.chunks_exact(2).any(|c| crosses(c[0], c[1], rect, 2.0))
                         }
                         Style::Filled(_) => pts.chunks_exact(2).any(|c| {
@@ -123,7 +144,11 @@ pub(super) fn plan(figure: &Figure, size: (u32, u32)) -> Result<Vec<LegendPlan<'
             .map_or_else(below, |at| Placement::Box(at, box_size)),
             c => Placement::Box(corner(c), box_size),
         };
-        plans.push(LegendPlan { entries, place });
+        plans.push(LegendPlan {
+            entries,
+            place,
+            aspect_change,
+        });
     }
     Ok(plans)
 }

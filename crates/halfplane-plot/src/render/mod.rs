@@ -15,7 +15,7 @@ mod legend;
 mod palette;
 mod png;
 
-pub use figure::{Figure, Legend, Panel, Series, Style};
+pub use figure::{ColorBar, Figure, Legend, Panel, Series, Style};
 pub use palette::palette;
 
 use crate::PlotError;
@@ -29,6 +29,10 @@ use std::path::Path;
 /// Width of one panel and height of a figure without a legend strip, in pixels.
 const PANEL_WIDTH: u32 = 640;
 const HEIGHT: u32 = 520;
+/// Width of a panel of equal aspect (a cross-section, wider than deep), in pixels.
+const MAP_WIDTH: u32 = 900;
+/// The heights an equal-aspect figure may take (beyond, the map is widened instead), in pixels.
+const MAP_HEIGHTS: (i32, i32) = (300, 1000);
 /// Legend geometry, in pixels.
 const LEGEND_FONT: u32 = 13;
 const ROW: i32 = 18;
@@ -70,9 +74,29 @@ pub fn write(figure: &Figure, path: &Path) -> Result<(), PlotError> {
 /// The figure as an SVG document, and its size in pixels.
 pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
     register_font();
-    let width = (PANEL_WIDTH * figure.panels.len().max(1) as u32).min(1920);
-    let plan = plan(figure, (width, HEIGHT))?;
-    let strip = plan
+    let panel_width = figure
+        .panels
+        .iter()
+        .map(|p| {
+            let base = if p.equal_aspect {
+                MAP_WIDTH
+            } else {
+                PANEL_WIDTH
+            };
+            base + p.color_bar.as_ref().map_or(0, |_| axes::BAR_STRIP)
+        })
+        .max()
+        .unwrap_or(PANEL_WIDTH);
+    let width = (panel_width * figure.panels.len().max(1) as u32).min(1920);
+    let mut height = HEIGHT;
+    let mut plans = plan(figure, (width, height))?;
+    // An equal-aspect map gets the height its shape needs (the legend plan is redone for it).
+    if let Some(change) = plans.iter().filter_map(|p| p.aspect_change).max() {
+        let wanted = (HEIGHT as i32 + change).clamp(MAP_HEIGHTS.0, MAP_HEIGHTS.1);
+        height = wanted as u32;
+        plans = plan(figure, (width, height))?;
+    }
+    let strip = plans
         .iter()
         .filter_map(|p| match p.place {
             Placement::Below { rows, .. } => Some(rows * ROW + 2 * PAD),
@@ -80,11 +104,11 @@ pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
         })
         .max()
         .unwrap_or(0);
-    let size = (width, HEIGHT + strip as u32);
+    let size = (width, height + strip as u32);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        draw(figure, &plan, strip, root)?;
+        draw(figure, &plans, strip, root)?;
     }
     let svg = svg.replace(
         &format!("font-family=\"{FAMILY}\""),

@@ -39,6 +39,8 @@ mod tests {
             title: "Title 0.5".into(),
             panels: vec![Panel {
                 legend: Legend::Auto,
+                color_bar: None,
+                equal_aspect: false,
                 title: "panel".into(),
                 x_label: "x".into(),
                 y_label: "y".into(),
