@@ -7,10 +7,10 @@ use crate::case::PyCase;
 use crate::errors;
 use halfplane::march::{self, Fields};
 use halfplane::{asymptotic, evolution, steady, Regime, SteadyOptions};
-use halfplane_cli::limits;
-use halfplane_cli::report::evolve::EvolveReport;
-use halfplane_cli::report::march::MarchReport;
-use halfplane_cli::report::steady::SteadyReport;
+use halfplane_case::limits;
+use halfplane_case::report::evolve::EvolveReport;
+use halfplane_case::report::march::MarchReport;
+use halfplane_case::report::steady::SteadyReport;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
@@ -112,7 +112,7 @@ const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 /// `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
 /// (as `march --json`), the cell centres and, with `fields`, the four fields of every increment
 /// as (increments, cells) arrays. Unless `no_size_limit`, a march estimated to take too long, or
-/// fields too large for memory, is refused before it starts (`halfplane_cli::limits`).
+/// fields too large for memory, is refused before it starts (`halfplane_case::limits`).
 #[pyfunction]
 #[pyo3(signature = (case, cells=None, fields=false, no_size_limit=false))]
 pub fn march_report<'py>(

@@ -6,7 +6,7 @@
 
 use crate::errors;
 use halfplane::Shape;
-use halfplane_cli::case::{self, Case};
+use halfplane_case::case::{self, Case};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};

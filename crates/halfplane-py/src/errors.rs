@@ -111,7 +111,7 @@ pub fn from_library(py: Python<'_>, error: &Error) -> PyErr {
 /// (the case file's own checks). `hide` is removed from the message (a temporary directory).
 /// A run refused by its size estimate: an `InputError` whose variant is `"TooLarge"`, with the
 /// keyword that lifts the limit.
-pub fn too_large(py: Python<'_>, error: &halfplane_cli::limits::TooLarge) -> PyErr {
+pub fn too_large(py: Python<'_>, error: &halfplane_case::limits::TooLarge) -> PyErr {
     let message = format!("{error} (pass no_size_limit=True to run it anyway)");
     exception(py, Kind::Input, &message, Some("TooLarge"))
 }

@@ -1,12 +1,12 @@
 //! `match`: the test that reproduces a prototype's contact-edge state. It runs the CLI's own
-//! [`halfplane_cli::commands::matching::compute`] (the same test contact from the options, the
+//! [`halfplane_case::matching::compute`] (the same test contact from the options, the
 //! same report and test case text), writing no file.
 
 use crate::case::PyCase;
 use crate::errors;
-use halfplane_cli::args::{TestArgs, TestProfile};
-use halfplane_cli::commands::matching::{compute, MatchConfig};
-use halfplane_cli::report::matching::MatchReportOut;
+use halfplane_case::matching::{compute, MatchConfig};
+use halfplane_case::matching::{TestOptions, TestProfile};
+use halfplane_case::report::matching::MatchReportOut;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
@@ -45,7 +45,7 @@ pub fn match_report(
         )))
         }
     };
-    let test = TestArgs {
+    let test = TestOptions {
         profile,
         radius,
         flat_half_width,
@@ -62,7 +62,6 @@ pub fn match_report(
         PathBuf::from(PROTOTYPE_NAME),
         &test,
         PathBuf::from(TEST_NAME),
-        true,
     )
     .map_err(input)?;
     let matched = py.detach(|| compute(&config)).map_err(input)?;

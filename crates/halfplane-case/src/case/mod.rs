@@ -14,7 +14,7 @@ mod csv;
 mod fatigue;
 
 use count::{count_in, RawCount};
-pub(crate) use csv::read_csv;
+pub use csv::read_csv;
 pub use fatigue::FatigueSettings;
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).

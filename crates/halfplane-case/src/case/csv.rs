@@ -9,7 +9,7 @@ use std::path::Path;
 /// "CSV UTF-8") are accepted. Returns the values row after row (`columns.len()` per row) and
 /// the file line of each row (for errors); `field` names the field that gave the path. Read
 /// a line at a time: a file with too many rows is rejected without holding it.
-pub(crate) fn read_csv(
+pub fn read_csv(
     path: &Path,
     field: &str,
     columns: &[&str],
