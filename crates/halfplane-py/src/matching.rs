@@ -68,14 +68,12 @@ pub fn match_report(
     let json = MatchReportOut::new(&matched.report, &config, &matched.notes)
         .json()
         .map_err(|e| input(e.into()))?;
-    let dir = tempfile::tempdir().map_err(|e| {
-        pyo3::exceptions::PyOSError::new_err(format!("cannot create a temporary directory: {e}"))
-    })?;
-    if let Some((path, csv)) = &matched.history_csv {
-        std::fs::write(dir.path().join(path), csv).map_err(|e| {
-            pyo3::exceptions::PyOSError::new_err(format!("cannot write a temporary table: {e}"))
-        })?;
-    }
-    let test_case = PyCase::from_text(py, &matched.test_case, dir.path())?;
+    // The mapped history's table, by the name the test case gives it (no file is written).
+    let tables = matched
+        .history_csv
+        .iter()
+        .map(|(path, csv)| (path.display().to_string(), csv.clone()))
+        .collect();
+    let test_case = PyCase::from_tables(py, &matched.test_case, &tables)?;
     Ok((json, test_case, matched.test_case, matched.notes))
 }

@@ -9,6 +9,7 @@ use halfplane::history::History;
 use halfplane::march::MarchOptions;
 use halfplane::stress;
 use halfplane::Contact;
+use halfplane_case::case::{read_csv, Table};
 use halfplane_case::report::stress::{StressReport, StressRow};
 use halfplane_case::report::Format;
 use halfplane_case::stress::{check_step, MAX_POINTS};
@@ -53,8 +54,11 @@ impl StressConfig {
         let step = check_step(args.step, &history, "--step")?;
         let (x, z, origin) = match (&args.at, &args.grid) {
             (Some(path), _) => {
-                let (values, lines) =
-                    halfplane_case::case::read_csv(path, "--at", &["x", "z"], MAX_POINTS)?;
+                let table = Table::File {
+                    field: "--at".into(),
+                    path: path.clone(),
+                };
+                let (values, lines) = read_csv(&table, &["x", "z"], MAX_POINTS)?;
                 let (x, z): (Vec<f64>, Vec<f64>) = values.chunks(2).map(|c| (c[0], c[1])).unzip();
                 let origin = Origin::File {
                     path: path.clone(),
