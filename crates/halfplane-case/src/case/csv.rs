@@ -2,8 +2,9 @@
 //! points.
 
 use anyhow::{anyhow, bail, Context, Result};
+use std::collections::VecDeque;
 use std::fmt;
-use std::io::BufRead;
+use std::io::{self, Read};
 use std::path::PathBuf;
 
 /// A CSV table: a file, or text given in the case itself (`data = """..."""`).
@@ -35,10 +36,11 @@ impl fmt::Display for Table<'_> {
     }
 }
 
-/// Reads a CSV whose header names `columns`, at most `max_rows` data rows; blank lines and lines starting with `#` are skipped, a UTF-8
+/// Reads a CSV whose header names `columns`, at most `max_rows` data rows, with the `csv` crate;
+/// blank lines and lines starting with `#` are skipped, a UTF-8
 /// byte-order mark and CRLF line ends (a spreadsheet's "CSV UTF-8") are accepted. Returns the
 /// values row after row (`columns.len()` per row) and the line of each row (1-based, for
-/// errors, which name the table, the line, the column and the value). Read a line at a time: a
+/// errors, which name the table, the line, the column and the value). Read a record at a time: a
 /// file with too many rows is rejected without holding it.
 pub fn read_csv(
     table: &Table,
@@ -48,74 +50,87 @@ pub fn read_csv(
     match table {
         Table::File { path, .. } => {
             let file = std::fs::File::open(path).with_context(|| format!("cannot read {table}"))?;
-            read_lines(std::io::BufReader::new(file), table, columns, max_rows)
+            read_lines(file, table, columns, max_rows)
         }
         Table::Data { text, .. } => read_lines(text.as_bytes(), table, columns, max_rows),
     }
 }
 
 fn read_lines(
-    mut reader: impl BufRead,
+    reader: impl Read,
     table: &Table,
     columns: &[&str],
     max_rows: usize,
 ) -> Result<(Vec<f64>, Vec<usize>)> {
     let header_text = columns.join(",");
+    // Cells are trimmed and blank lines skipped by the csv crate; comments are skipped here.
+    // Lines end at '\n' (a CRLF's '\r' is trimmed with the last cell). Quotes are plain
+    // characters, so that a quote in a comment cannot swallow the lines after it (cells are
+    // numbers). A row's number of cells is checked here, to name the line.
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .terminator(csv::Terminator::Any(b'\n'))
+        .quoting(false)
+        .from_reader(LineEnds::new(reader));
     let (mut values, mut numbers) = (Vec::new(), Vec::new());
     let mut header_seen = false;
-    let mut line = String::new();
-    for number in 1.. {
-        line.clear();
-        let read = reader
-            .read_line(&mut line)
-            .with_context(|| format!("cannot read {table}, line {number}"))?;
-        if read == 0 {
+    let mut record = csv::ByteRecord::new();
+    loop {
+        let more = reader
+            .read_byte_record(&mut record)
+            .with_context(|| format!("cannot read {table}"))?;
+        if !more {
             break;
         }
-        let text = if number == 1 {
-            line.strip_prefix('\u{feff}').unwrap_or(&line)
-        } else {
-            &line
+        let end = reader.position().byte();
+        let line = reader.get_mut().line_ending_at(end);
+        // A cell as text (borrowed unless it is not UTF-8), trimmed.
+        let cell = |i: usize| {
+            let bytes = &record[i];
+            // A spreadsheet's "CSV UTF-8" starts with a byte-order mark.
+            let bytes = match (header_seen, i) {
+                (false, 0) => bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes),
+                _ => bytes,
+            };
+            String::from_utf8_lossy(bytes.trim_ascii())
         };
-        // trim() also removes the '\r' of a CRLF line end.
-        let text = text.trim();
-        if text.is_empty() || text.starts_with('#') {
+        // A line of spaces, or a comment.
+        if record.len() == 1 && cell(0).is_empty() || cell(0).starts_with('#') {
             continue;
         }
         if !header_seen {
-            let names: Vec<String> = text
-                .split(',')
-                .map(|s| s.trim().to_ascii_lowercase())
+            let names: Vec<String> = (0..record.len())
+                .map(|i| cell(i).to_ascii_lowercase())
                 .collect();
             if names != columns {
-                bail!("{table}, line {number}: header is \"{text}\", expected \"{header_text}\"");
+                let text = (0..record.len()).map(cell).collect::<Vec<_>>().join(",");
+                bail!("{table}, line {line}: header is \"{text}\", expected \"{header_text}\"");
             }
             header_seen = true;
             continue;
         }
         if numbers.len() == max_rows {
             bail!(
-                "{table}, line {number}: the table has more than {max_rows} rows, the most a run takes"
+                "{table}, line {line}: the table has more than {max_rows} rows, the most a run takes"
             );
         }
-        let mut found = 0;
-        for cell in text.split(',').map(str::trim) {
-            found += 1;
-            let Some(name) = columns.get(found - 1) else {
-                continue;
-            };
-            let value = cell.parse::<f64>().map_err(|_| {
-                anyhow!("{table}, line {number}: {name} = \"{cell}\" is not a number")
+        if record.len() != columns.len() {
+            bail!(
+                "{table}, line {line}: expected {} columns ({header_text}), found {}",
+                columns.len(),
+                record.len()
+            );
+        }
+        for (i, name) in columns.iter().enumerate() {
+            let text = cell(i);
+            let value = text.parse::<f64>().map_err(|_| {
+                anyhow!("{table}, line {line}: {name} = \"{text}\" is not a number")
             })?;
             values.push(value);
         }
-        if found != columns.len() {
-            bail!(
-                "{table}, line {number}: expected {} columns ({header_text}), found {found}",
-                columns.len()
-            );
-        }
-        numbers.push(number);
+        numbers.push(line);
     }
     if !header_seen {
         bail!("{table} is empty: it needs a header {header_text} and rows");
@@ -124,4 +139,60 @@ fn read_lines(
         bail!("{table} has a header but no rows");
     }
     Ok((values, numbers))
+}
+
+/// A reader that notes where the lines it passes on end, so that a record's line is known from
+/// where the record ends: the csv crate's own line numbers leave out blank lines. Only the line
+/// ends not yet matched to a record are kept (those in the csv reader's buffer).
+struct LineEnds<R> {
+    inner: R,
+    /// Bytes passed on so far.
+    offset: u64,
+    /// Offsets of the '\n's passed on and not yet counted.
+    ends: VecDeque<u64>,
+    /// '\n's counted so far.
+    counted: usize,
+}
+
+impl<R> LineEnds<R> {
+    fn new(inner: R) -> Self {
+        Self {
+            inner,
+            offset: 0,
+            ends: VecDeque::new(),
+            counted: 0,
+        }
+    }
+
+    /// The line (1-based) of the record whose last byte (its '\n', or the last byte of a file
+    /// without a final line end) is at `end - 1`.
+    fn line_ending_at(&mut self, end: u64) -> usize {
+        let mut terminated = false;
+        while let Some(&at) = self.ends.front().filter(|&&at| at < end) {
+            terminated = at + 1 == end;
+            self.ends.pop_front();
+            self.counted += 1;
+        }
+        if terminated {
+            self.counted
+        } else {
+            self.counted + 1
+        }
+    }
+}
+
+impl<R: Read> Read for LineEnds<R> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        let start = self.offset;
+        self.ends.extend(
+            buf[..n]
+                .iter()
+                .enumerate()
+                .filter(|(_, b)| **b == b'\n')
+                .map(|(i, _)| start + i as u64),
+        );
+        self.offset += n as u64;
+        Ok(n)
+    }
 }
