@@ -52,8 +52,10 @@ fn canonical(text: &str, dir: &Path, files: &BTreeMap<String, String>) -> anyhow
 }
 
 impl PyCase {
-    /// The case of text whose tables are given in `files` (by the file names the text gives) or
-    /// inline: they are put inline first, so nothing is read or written.
+    /// The case of text whose tables are inline or given in `files` (by the file names the text
+    /// gives): those are put inline first, then the text is parsed from memory. Nothing is
+    /// written; a table the text names by a file that `files` lacks is read from the current
+    /// directory, as `Case.from_toml` reads it.
     pub(crate) fn from_tables(
         py: Python<'_>,
         text: &str,
