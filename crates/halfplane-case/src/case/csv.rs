@@ -2,6 +2,7 @@
 //! points.
 
 use anyhow::{anyhow, bail, Context, Result};
+use std::borrow::Cow;
 use std::collections::VecDeque;
 use std::fmt;
 use std::io::{self, Read};
@@ -63,14 +64,14 @@ fn read_lines(
     max_rows: usize,
 ) -> Result<(Vec<f64>, Vec<usize>)> {
     let header_text = columns.join(",");
-    // Cells are trimmed and blank lines skipped by the csv crate; comments are skipped here.
-    // Lines end at '\n' (a CRLF's '\r' is trimmed with the last cell). Quotes are plain
-    // characters, so that a quote in a comment cannot swallow the lines after it (cells are
-    // numbers). A row's number of cells is checked here, to name the line.
+    // The csv crate splits the lines into cells and skips empty lines; cells are trimmed here
+    // (without the copy the crate's trimming makes of every record), and comments and lines of
+    // spaces skipped. Lines end at '\n' (a CRLF's '\r' is trimmed with the last cell). Quotes
+    // are plain characters, so that a quote in a comment cannot swallow the lines after it (cells
+    // are numbers). A row's number of cells is checked here, to name the line.
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)
-        .trim(csv::Trim::All)
         .terminator(csv::Terminator::Any(b'\n'))
         .quoting(false)
         .from_reader(LineEnds::new(reader));
@@ -86,7 +87,7 @@ fn read_lines(
         }
         let end = reader.position().byte();
         let line = reader.get_mut().line_ending_at(end);
-        // A cell as text (borrowed unless it is not UTF-8), trimmed.
+        // A cell as text, trimmed (borrowed unless it is not UTF-8: then shown with U+FFFD).
         let cell = |i: usize| {
             let bytes = &record[i];
             // A spreadsheet's "CSV UTF-8" starts with a byte-order mark.
@@ -94,10 +95,13 @@ fn read_lines(
                 (false, 0) => bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes),
                 _ => bytes,
             };
-            String::from_utf8_lossy(bytes.trim_ascii())
+            let bytes = bytes.trim_ascii();
+            std::str::from_utf8(bytes)
+                .map_or_else(|_| String::from_utf8_lossy(bytes), Cow::Borrowed)
         };
         // A line of spaces, or a comment.
-        if record.len() == 1 && cell(0).is_empty() || cell(0).starts_with('#') {
+        let first = cell(0);
+        if record.len() == 1 && first.is_empty() || first.starts_with('#') {
             continue;
         }
         if !header_seen {
