@@ -238,7 +238,7 @@ fuzz_target!(|input: Input| {
         t += "[solver]\n";
         t += &solver;
     }
-    if let Ok(case) = halfplane_cli::case::parse(&t, dir) {
+    if let Ok(case) = halfplane_case::case::parse(&t, dir) {
         check_case(&case, 64, 16);
     }
 });

@@ -13,7 +13,7 @@ fuzz_target!(|data: &[u8]| {
     if !files_are_contained(text, dir) {
         return;
     }
-    if let Ok(case) = halfplane_cli::case::parse(text, dir) {
+    if let Ok(case) = halfplane_case::case::parse(text, dir) {
         check_case(&case, 32, 16);
     }
 });

@@ -34,7 +34,7 @@ fuzz_target!(|data: &[u8]| {
         ][usize::from(mode / 2) % 4];
         let text =
             format!("{MATERIAL}[profile]\nkind = \"tabulated\"\nfile = \"profile.csv\"\n{kinks}");
-        let Ok(case) = halfplane_cli::case::parse(&text, dir) else {
+        let Ok(case) = halfplane_case::case::parse(&text, dir) else {
             return;
         };
         check_case(&case, 0, 8);
@@ -78,7 +78,7 @@ fuzz_target!(|data: &[u8]| {
         let text = format!(
             "{MATERIAL}[profile]\nkind = \"hertz\"\nradius = 50.0\n[history]\nfile = \"history.csv\"\n"
         );
-        if let Ok(case) = halfplane_cli::case::parse(&text, dir) {
+        if let Ok(case) = halfplane_case::case::parse(&text, dir) {
             check_case(&case, 32, 16);
         }
     }

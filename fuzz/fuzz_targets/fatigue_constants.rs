@@ -112,7 +112,7 @@ fuzz_target!(|input: Input| {
             _ => text += &lit.line(name),
         }
     }
-    let Ok(case) = halfplane_cli::case::parse(&text, fixture_dir()) else {
+    let Ok(case) = halfplane_case::case::parse(&text, fixture_dir()) else {
         return;
     };
     let settings = match case.fatigue() {

@@ -1,7 +1,7 @@
 //! `halfplane match` from a prototype case file to the test case it writes: a valid case file
 //! whose numbers are fuzzed (material, friction, any analytic profile, the cycle, an optional
 //! in-phase `[history]` carried over), and fuzzed test options (profile kind and geometry,
-//! E, nu, f overrides, either mode), through the CLI's own path (`MatchConfig::from_case`,
+//! E, nu, f overrides, either mode), through the command's own path (`MatchConfig::from_case`,
 //! `compute`, the table and JSON reports). On success: every compared value is finite, and the
 //! test case text reads back (`case::parse`) to exactly the test cycle and contact the report
 //! describes, whose steady analysis agrees with the report's regime.
@@ -9,10 +9,9 @@
 
 use arbitrary::Arbitrary;
 use halfplane::steady::{self, SteadyOptions};
-use halfplane_cli::args::{TestArgs, TestProfile};
-use halfplane_cli::case;
-use halfplane_cli::commands::matching::{compute, MatchConfig};
-use halfplane_cli::report::matching::MatchReportOut;
+use halfplane_case::case;
+use halfplane_case::matching::{compute, MatchConfig, TestOptions, TestProfile};
+use halfplane_case::report::matching::MatchReportOut;
 use halfplane_fuzz::{check_steady, Num};
 use libfuzzer_sys::fuzz_target;
 use std::fmt::Write;
@@ -103,7 +102,7 @@ fuzz_target!(|input: Input| {
     let Ok(prototype) = case::parse(&text, dir) else {
         return;
     };
-    let test = TestArgs {
+    let test = TestOptions {
         profile: [
             TestProfile::Hertz,
             TestProfile::FlatRounded,
@@ -124,7 +123,6 @@ fuzz_target!(|input: Input| {
         PathBuf::from("prototype.toml"),
         &test,
         PathBuf::from("test.toml"),
-        false,
     ) else {
         return;
     };

@@ -8,8 +8,8 @@
 #![no_main]
 
 use arbitrary::Arbitrary;
+use halfplane_case::limits;
 use halfplane_cli::commands::sweep::OutputFormat;
-use halfplane_cli::limits;
 use halfplane_cli::sweep::{size, spec, template::Template};
 use halfplane_fuzz::{files_are_contained, fixture_dir, Num};
 use libfuzzer_sys::fuzz_target;

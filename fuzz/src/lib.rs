@@ -327,7 +327,7 @@ pub fn files_are_contained(text: &str, dir: &Path) -> bool {
 /// Checks a resolved case and runs the cheap analyses on it: the steady state, the asymptotic
 /// description and a 3-point evolution of its cycle, and the finiteness of its history. Marches
 /// only short histories, on at most `max_cells` cells, so each run stays fast.
-pub fn check_case(case: &halfplane_cli::case::Case, max_rows: usize, max_cells: usize) {
+pub fn check_case(case: &halfplane_case::case::Case, max_rows: usize, max_cells: usize) {
     use halfplane::steady::analyse;
     use halfplane::{asymptotic, evolution, march, SteadyOptions};
     check_contact(&case.contact);

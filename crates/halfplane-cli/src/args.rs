@@ -10,6 +10,7 @@
 #![allow(missing_docs)]
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use halfplane_case::matching::TestOptions;
 use std::path::PathBuf;
 
 /// Frictional half-plane contact: steady-state stick zones, slip zones and their evolution.
@@ -76,6 +77,16 @@ pub struct FormatArgs {
     /// Same as --format json.
     #[arg(long, conflicts_with = "format")]
     pub json: bool,
+}
+
+impl From<Format> for halfplane_case::report::Format {
+    fn from(f: Format) -> Self {
+        match f {
+            Format::Table => Self::Table,
+            Format::Csv => Self::Csv,
+            Format::Json => Self::Json,
+        }
+    }
 }
 
 impl FormatArgs {
@@ -438,6 +449,27 @@ pub struct TestArgs {
     /// both points, the asymptotic match).
     #[arg(long)]
     pub exact: bool,
+}
+
+impl TestArgs {
+    /// The options as `halfplane_case::matching` takes them.
+    pub fn options(&self) -> TestOptions {
+        TestOptions {
+            profile: match self.profile {
+                TestProfile::Hertz => halfplane_case::matching::TestProfile::Hertz,
+                TestProfile::FlatRounded => halfplane_case::matching::TestProfile::FlatRounded,
+                TestProfile::PowerLaw => halfplane_case::matching::TestProfile::PowerLaw,
+            },
+            radius: self.radius,
+            flat_half_width: self.flat_half_width,
+            coefficient: self.coefficient,
+            exponent: self.exponent,
+            youngs_modulus: self.youngs_modulus,
+            poisson_ratio: self.poisson_ratio,
+            friction: self.friction,
+            exact: self.exact,
+        }
+    }
 }
 
 #[derive(Args, Debug)]

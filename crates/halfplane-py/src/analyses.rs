@@ -9,11 +9,11 @@ use crate::convert::{self, Node};
 use crate::errors;
 use halfplane::march::{self, Fields};
 use halfplane::{asymptotic, evolution, steady, Regime, SteadyOptions};
-use halfplane_cli::limits;
-use halfplane_cli::report::evolve::{EvolveReport, EvolveRow};
-use halfplane_cli::report::march::MarchStepRow;
-use halfplane_cli::report::steady::SteadyReport;
-use halfplane_cli::report::{Column, Shown};
+use halfplane_case::limits;
+use halfplane_case::report::evolve::{EvolveReport, EvolveRow};
+use halfplane_case::report::march::MarchStepRow;
+use halfplane_case::report::steady::SteadyReport;
+use halfplane_case::report::{Column, Shown};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
@@ -124,7 +124,7 @@ impl Recorded {
 const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
 /// One increment as a row of the `march --csv` columns, each computed as the CLI's report row
-/// computes it (`halfplane_cli::report::march`): the largest stick interval (null when none) and
+/// computes it (`halfplane_case::report::march`): the largest stick interval (null when none) and
 /// every interval as `left:right`, space-separated.
 fn step_row(s: &march::StepReport) -> Node {
     let largest = s.largest_stick();
@@ -167,7 +167,7 @@ fn cycle_row(c: &march::CycleReport) -> Node {
 /// as `march --json`), the shakedown cycle, `cycles_run`, `steady_change` and `steady_converged`
 /// (as `march --json`), the cell centres and, with `fields`, the four fields of every increment
 /// as (increments, cells) arrays. Unless `no_size_limit`, a march estimated to take too long, or
-/// fields too large for memory, is refused before it starts (`halfplane_cli::limits`).
+/// fields too large for memory, is refused before it starts (`halfplane_case::limits`).
 #[pyfunction]
 #[pyo3(signature = (case, cells=None, fields=false, no_size_limit=false))]
 pub fn march_report<'py>(

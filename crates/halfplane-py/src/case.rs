@@ -1,12 +1,13 @@
-//! `halfplane.Case`: a case as the CLI reads it. Every case, however made (a file, TOML text,
-//! keywords, unpickling), is resolved by the CLI's own case-file parser, so its checks and messages
-//! are the CLI's. A case also keeps its canonical form: its TOML text with any tables (profile
-//! and history CSV) held as text under fixed names, which is what it pickles to and what makes
-//! two cases equal.
+//! `halfplane.Case`: a case as the command reads it. Every case, however made (a file, TOML text,
+//! keywords, unpickling), is resolved by the command's own case-file parser
+//! (`halfplane_case::case`), so its checks and messages are the command's. A case also keeps its
+//! canonical form: its TOML text with any tables (profile and history CSV) inline as
+//! `data = """..."""`, which is what it pickles to and what makes two cases equal. Nothing is
+//! written to disk.
 
 use crate::errors;
 use halfplane::Shape;
-use halfplane_cli::case::{self, Case};
+use halfplane_case::case::{self, Case};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
@@ -14,10 +15,8 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
 
-/// The name of a profile table in the canonical form.
-const PROFILE_FILE: &str = "profile.csv";
-/// The name of a history table in the canonical form.
-const HISTORY_FILE: &str = "history.csv";
+/// The sections that may hold a table, and the name `Case.tables` gives each table.
+const TABLES: [(&str, &str); 2] = [("profile", "profile.csv"), ("history", "history.csv")];
 
 /// A contact case: material, friction, profile and, optionally, a cycle, a load history and
 /// solver settings (the sections of a case file).
@@ -25,68 +24,56 @@ const HISTORY_FILE: &str = "history.csv";
 pub struct PyCase {
     pub(crate) case: Case,
     pub(crate) text: String,
-    files: BTreeMap<String, String>,
 }
 
-/// The canonical document of case text whose relative paths start at `dir`: the table files'
-/// contents, read, and their fields renamed to the fixed names.
-fn canonical(
-    text: &str,
-    dir: &Path,
-    mut files: BTreeMap<String, String>,
-) -> anyhow::Result<(String, BTreeMap<String, String>)> {
+/// The canonical text of case text whose relative paths start at `dir`: every table named by a
+/// `file` field inline as `data`, its text taken from `files` (by the name written) or read.
+fn canonical(text: &str, dir: &Path, files: &BTreeMap<String, String>) -> anyhow::Result<String> {
     let mut doc: toml::Table = toml::from_str(text)?;
-    for (section, name) in [("profile", PROFILE_FILE), ("history", HISTORY_FILE)] {
+    for (section, _) in TABLES {
         let Some(table) = doc.get_mut(section).and_then(|s| s.as_table_mut()) else {
             continue;
         };
         let Some(file) = table.get("file").and_then(|f| f.as_str()) else {
             continue;
         };
-        if !files.contains_key(file) || file != name {
-            let path = dir.join(file);
-            let contents = match files.get(file) {
-                Some(c) => c.clone(),
-                None => std::fs::read_to_string(&path)?,
-            };
-            files.insert(name.to_string(), contents);
+        if table.contains_key("data") {
+            // Both: left for the parser, which names both fields.
+            continue;
         }
-        table.insert("file".into(), toml::Value::String(name.into()));
+        let contents = match files.get(file) {
+            Some(c) => c.clone(),
+            None => std::fs::read_to_string(dir.join(file))?,
+        };
+        table.remove("file");
+        table.insert("data".into(), toml::Value::String(contents));
     }
-    files.retain(|k, _| k == PROFILE_FILE || k == HISTORY_FILE);
-    Ok((toml::to_string(&doc)?, files))
+    Ok(toml::to_string(&doc)?)
 }
 
 impl PyCase {
-    /// Parses canonical text and tables: the tables are written to a temporary directory and the
-    /// case parsed from there (its path is removed from messages).
-    pub(crate) fn from_canonical(
+    /// The case of text whose tables are inline or given in `files` (by the file names the text
+    /// gives): those are put inline first, then the text is parsed from memory. Nothing is
+    /// written; a table the text names by a file that `files` lacks is read from the current
+    /// directory, as `Case.from_toml` reads it.
+    pub(crate) fn from_tables(
         py: Python<'_>,
-        text: String,
-        files: BTreeMap<String, String>,
+        text: &str,
+        files: &BTreeMap<String, String>,
     ) -> PyResult<Self> {
-        let dir = tempfile::tempdir().map_err(|e| {
-            pyo3::exceptions::PyOSError::new_err(format!(
-                "cannot create a temporary directory: {e}"
-            ))
-        })?;
-        for (name, contents) in &files {
-            std::fs::write(dir.path().join(name), contents).map_err(|e| {
-                pyo3::exceptions::PyOSError::new_err(format!("cannot write a temporary table: {e}"))
-            })?;
-        }
-        let hide = format!("{}{}", dir.path().display(), std::path::MAIN_SEPARATOR);
+        let text =
+            canonical(text, Path::new(""), files).map_err(|e| errors::from_anyhow(py, &e, None))?;
         let case =
-            case::parse(&text, dir.path()).map_err(|e| errors::from_anyhow(py, &e, Some(&hide)))?;
-        Ok(Self { case, text, files })
+            case::parse(&text, Path::new("")).map_err(|e| errors::from_anyhow(py, &e, None))?;
+        Ok(Self { case, text })
     }
 
     pub(crate) fn from_text(py: Python<'_>, text: &str, dir: &Path) -> PyResult<Self> {
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let case = case::parse(text, dir).map_err(|e| errors::from_anyhow(py, &e, None))?;
-        let (text, files) =
-            canonical(text, dir, BTreeMap::new()).map_err(|e| errors::from_anyhow(py, &e, None))?;
-        Ok(Self { case, text, files })
+        let text = canonical(text, dir, &BTreeMap::new())
+            .map_err(|e| errors::from_anyhow(py, &e, None))?;
+        Ok(Self { case, text })
     }
 
     /// Reads a case file as `halfplane CASE` does.
@@ -96,9 +83,9 @@ impl PyCase {
             .map_err(|e| errors::from_anyhow(py, &anyhow::Error::from(e), None))?;
         let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let (text, files) = canonical(text, &dir, BTreeMap::new())
+        let text = canonical(text, &dir, &BTreeMap::new())
             .map_err(|e| errors::from_anyhow(py, &e, None))?;
-        Ok(Self { case, text, files })
+        Ok(Self { case, text })
     }
 }
 
@@ -216,7 +203,6 @@ impl PyCase {
         units: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let mut doc = toml::Table::new();
-        let mut files = BTreeMap::new();
         let m = section(&mut doc, "material");
         m.insert("youngs_modulus".into(), youngs_modulus.into());
         m.insert("poisson_ratio".into(), poisson_ratio.into());
@@ -247,8 +233,7 @@ impl PyCase {
                 ));
             }
             let rows: Vec<Vec<f64>> = x.iter().zip(&g).map(|(x, g)| vec![*x, *g]).collect();
-            files.insert(PROFILE_FILE.to_string(), csv_table("x,g", &rows));
-            p.insert("file".into(), PROFILE_FILE.into());
+            p.insert("data".into(), csv_table("x,g", &rows).into());
         }
         if let Some(k) = kinks {
             p.insert(
@@ -291,11 +276,8 @@ impl PyCase {
                 let triples: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
                 halfplane::history::History::from_rows(&triples)
                     .map_err(|e| errors::from_library(py, &e))?;
-                files.insert(
-                    HISTORY_FILE.to_string(),
-                    csv_table("normal,shear,bulk", &rows),
-                );
-                section(&mut doc, "history").insert("file".into(), HISTORY_FILE.into());
+                section(&mut doc, "history")
+                    .insert("data".into(), csv_table("normal,shear,bulk", &rows).into());
             }
         }
         if cells.is_some() || slip_tolerance.is_some() {
@@ -311,9 +293,7 @@ impl PyCase {
             doc.insert("units".into(), to_toml(&u, "units")?);
         }
         let text = toml::to_string(&doc).map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        let (text, files) = canonical(&text, Path::new("."), files)
-            .map_err(|e| errors::from_anyhow(py, &e, None))?;
-        Self::from_canonical(py, text, files)
+        Self::from_tables(py, &text, &BTreeMap::new())
     }
 
     /// Parses case-file text (TOML). Table files it names are read relative to `base_dir`
@@ -328,15 +308,23 @@ impl PyCase {
         Self::from_text(py, text, &base_dir.unwrap_or_else(|| ".".into()))
     }
 
-    /// The canonical TOML text (table files named `profile.csv` and `history.csv`, see `tables`).
+    /// The canonical TOML text, complete in itself: tables are inline as `data = """..."""`.
     fn to_toml(&self) -> String {
         self.text.clone()
     }
 
-    /// The CSV tables the canonical text names, by file name.
+    /// The CSV tables the case holds: `profile.csv` (a tabulated profile) and `history.csv` (a
+    /// history's rows), as text.
     #[getter]
     fn tables(&self) -> BTreeMap<String, String> {
-        self.files.clone()
+        let doc: toml::Table = toml::from_str(&self.text).unwrap_or_default();
+        TABLES
+            .iter()
+            .filter_map(|(section, name)| {
+                let data = doc.get(*section)?.get("data")?.as_str()?;
+                Some((name.to_string(), data.to_string()))
+            })
+            .collect()
     }
 
     /// The profile kind: "hertz", "flat-rounded", "power-law" or "tabulated".
@@ -451,7 +439,7 @@ impl PyCase {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
             .cast::<PyCase>()
-            .is_ok_and(|o| o.get().text == self.text && o.get().files == self.files)
+            .is_ok_and(|o| o.get().text == self.text)
     }
 
     #[allow(clippy::type_complexity)]
@@ -462,8 +450,7 @@ impl PyCase {
         let f = py
             .import("halfplane._halfplane")?
             .getattr("_case_from_state")?;
-        let me = slf.get();
-        Ok((f, (me.text.clone(), me.files.clone())))
+        Ok((f, (slf.get().text.clone(), BTreeMap::new())))
     }
 }
 
@@ -480,14 +467,15 @@ fn kind(shape: &Shape) -> &'static str {
     }
 }
 
-/// Unpickles a case from its canonical text and tables.
+/// Unpickles a case from its canonical text (`files`: the tables by the file names the text
+/// gives, as pickles made before tables were inline hold them; empty now).
 #[pyfunction]
 pub fn _case_from_state(
     py: Python<'_>,
     text: String,
     files: BTreeMap<String, String>,
 ) -> PyResult<PyCase> {
-    PyCase::from_canonical(py, text, files)
+    PyCase::from_tables(py, &text, &files)
 }
 
 /// Reads a case file (TOML), as `halfplane steady CASE` does; tables are read relative to it.

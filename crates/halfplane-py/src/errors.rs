@@ -74,7 +74,7 @@ pub fn _error_examples(py: Python<'_>) -> Vec<(String, String, Py<PyBaseExceptio
 
 /// A run refused by its size estimate: an `InputError` whose variant is `"TooLarge"`, with the
 /// keyword that lifts the limit.
-pub fn too_large(py: Python<'_>, error: &halfplane_cli::limits::TooLarge) -> PyErr {
+pub fn too_large(py: Python<'_>, error: &halfplane_case::limits::TooLarge) -> PyErr {
     let message = format!("{error} (pass no_size_limit=True to run it anyway)");
     exception(py, Kind::Input, &message, Some("TooLarge"))
 }

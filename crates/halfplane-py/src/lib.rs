@@ -1,8 +1,8 @@
 //! The native module `halfplane._halfplane` behind the Python package in `python/`. It holds no
-//! physics and no formats of its own: cases are read by the CLI's case parser
-//! (`halfplane_cli::case`), reports are the CLI's report rows, converted to Python objects and
-//! numpy arrays without text (the `convert` module), and batches run on [`halfplane::batch`]. The Python
-//! layer (`python/halfplane/__init__.py`) builds the public API (typed result classes,
+//! physics and no formats of its own: cases are read by the command's case parser
+//! (`halfplane_case::case`), reports are the command's report rows, converted to Python objects
+//! and numpy arrays without text (the `convert` module), and batches run on [`halfplane::batch`].
+//! The Python layer (`python/halfplane/__init__.py`) builds the public API (typed result classes,
 //! DataFrames) on these functions.
 
 mod analyses;

@@ -1,14 +1,14 @@
 //! `match`: the test that reproduces a prototype's contact-edge state. It runs the CLI's own
-//! [`halfplane_cli::commands::matching::compute`] (the same test contact from the options, the
-//! same report and test case text), writing no file; the report reaches Python as nested dicts
+//! [`halfplane_case::matching::compute`] (the same test contact from the options, the same report
+//! and test case text), writing no file; the report reaches Python as nested dicts
 //! ([`crate::convert`]), not JSON text.
 
 use crate::case::PyCase;
 use crate::convert;
 use crate::errors;
-use halfplane_cli::args::{TestArgs, TestProfile};
-use halfplane_cli::commands::matching::{compute, MatchConfig};
-use halfplane_cli::report::matching::MatchReportOut;
+use halfplane_case::matching::{compute, MatchConfig};
+use halfplane_case::matching::{TestOptions, TestProfile};
+use halfplane_case::report::matching::MatchReportOut;
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
@@ -47,7 +47,7 @@ pub fn match_report<'py>(
         )))
         }
     };
-    let test = TestArgs {
+    let test = TestOptions {
         profile,
         radius,
         flat_half_width,
@@ -64,20 +64,17 @@ pub fn match_report<'py>(
         PathBuf::from(PROTOTYPE_NAME),
         &test,
         PathBuf::from(TEST_NAME),
-        true,
     )
     .map_err(input)?;
     let matched = py.detach(|| compute(&config)).map_err(input)?;
     let report = MatchReportOut::new(&matched.report, &config, &matched.notes);
     let report = convert::to_node(&report)?.into_py(py)?;
-    let dir = tempfile::tempdir().map_err(|e| {
-        pyo3::exceptions::PyOSError::new_err(format!("cannot create a temporary directory: {e}"))
-    })?;
-    if let Some((path, csv)) = &matched.history_csv {
-        std::fs::write(dir.path().join(path), csv).map_err(|e| {
-            pyo3::exceptions::PyOSError::new_err(format!("cannot write a temporary table: {e}"))
-        })?;
-    }
-    let test_case = PyCase::from_text(py, &matched.test_case, dir.path())?;
+    // The mapped history's table, by the name the test case gives it (no file is written).
+    let tables = matched
+        .history_csv
+        .iter()
+        .map(|(path, csv)| (path.display().to_string(), csv.clone()))
+        .collect();
+    let test_case = PyCase::from_tables(py, &matched.test_case, &tables)?;
     Ok((report, test_case, matched.test_case, matched.notes))
 }

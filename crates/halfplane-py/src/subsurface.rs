@@ -8,8 +8,8 @@ use crate::case::PyCase;
 use crate::convert;
 use crate::errors;
 use halfplane::fatigue;
-use halfplane_cli::commands::stress as stress_command;
-use halfplane_cli::report::fatigue::{FatigueReport, FatigueRow};
+use halfplane_case::report::fatigue::{FatigueReport, FatigueRow};
+use halfplane_case::stress as stress_command;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -55,7 +55,7 @@ pub fn stress_points<'py>(
     out.set_item("shear", report.shear)?;
     out.set_item("bulk", report.bulk)?;
     out.set_item("half_width", report.half_width)?;
-    let column = |f: fn(&halfplane_cli::report::stress::StressRow) -> f64| {
+    let column = |f: fn(&halfplane_case::report::stress::StressRow) -> f64| {
         PyArray1::from_iter(py, report.points.iter().map(f))
     };
     out.set_item("sxx", column(|r| r.sxx))?;

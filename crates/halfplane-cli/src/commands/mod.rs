@@ -28,7 +28,7 @@ pub fn run(command: &Command) -> Result<()> {
         Command::Steady(a) => steady::run(&steady::SteadyConfig::resolve(a)?),
         Command::Evolve(a) => evolve::run(&evolve::EvolveConfig::resolve(a)?),
         Command::March(a) => march::run(&march::MarchConfig::resolve(a)?),
-        Command::Match(a) => matching::run(&matching::MatchConfig::resolve(a)?),
+        Command::Match(a) => matching::run(&matching::resolve(a)?, a.json),
         Command::Stress(a) => stress::run(&stress::StressConfig::resolve(a)?),
         Command::Fatigue(a) => fatigue::run(&fatigue::FatigueConfig::resolve(a)?),
         Command::Crack(a) => crack::run(&crack::CrackConfig::resolve(a)?),

@@ -168,8 +168,9 @@ impl PlotConfig {
             PlotCommand::Match(a) => {
                 let case = load(&a.figure)?;
                 let cycle = case.cycle()?;
-                let test = super::matching::test_contact(&a.test, &case.contact)?;
-                let mode = super::matching::mode(&a.test);
+                let options = a.test.options();
+                let test = halfplane_case::matching::test_contact(&options, &case.contact)?;
+                let mode = halfplane_case::matching::mode(&options);
                 (&a.figure, case, FigureConfig::Match { cycle, test, mode })
             }
             PlotCommand::StressMap(a) => {
@@ -235,10 +236,19 @@ impl PlotConfig {
         };
         Ok(Self {
             contact: case.contact,
-            units: case.units.plot(),
+            units: plot_units(&case.units),
             output: common.output.clone(),
             figure,
         })
+    }
+}
+
+/// The unit names the figures' axis labels show.
+fn plot_units(units: &crate::units::Units) -> halfplane_plot::Units {
+    halfplane_plot::Units {
+        force_per_length: units.force_per_length(),
+        length: units.length.clone(),
+        stress: units.stress.clone(),
     }
 }
 

@@ -1,20 +1,20 @@
 //! `halfplane stress`: the stresses below the contact at a marched increment, at the points of a
 //! CSV file or on a grid (`docs/stress.md`).
 
-use crate::args::{Format, StressArgs};
+use crate::args::StressArgs;
 use crate::output::emit;
-use crate::report::stress::{StressReport, StressRow};
-use crate::units::Units;
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{anyhow, bail, Result};
 use halfplane::error::MAGNITUDE_LIMIT;
 use halfplane::history::History;
 use halfplane::march::MarchOptions;
 use halfplane::stress;
 use halfplane::Contact;
+use halfplane_case::case::{read_csv, Table};
+use halfplane_case::report::stress::{StressReport, StressRow};
+use halfplane_case::report::Format;
+use halfplane_case::stress::{check_step, MAX_POINTS};
+use halfplane_case::units::Units;
 use std::path::PathBuf;
-
-/// Most points a run takes (the points and the rows are held in memory: about 100 bytes each).
-pub const MAX_POINTS: usize = 10_000_000;
 
 /// What `stress` runs on.
 #[derive(Debug, Clone)]
@@ -42,14 +42,23 @@ pub struct StressConfig {
 impl StressConfig {
     /// Reads the case, the points (`--at`) or the grid (`--grid`) and checks `--step`.
     pub fn resolve(args: &StressArgs) -> Result<Self> {
-        let case = crate::case::load(&args.case)?;
+        let case = halfplane_case::case::load(&args.case)?;
         let history = case.history()?;
         let options = case.solver_with_cells(args.cells)?;
-        crate::limits::check_case_march(&history, &options, args.cells, args.no_size_limit)?;
+        halfplane_case::limits::check_case_march(
+            &history,
+            &options,
+            args.cells,
+            args.no_size_limit,
+        )?;
         let step = check_step(args.step, &history, "--step")?;
         let (x, z, origin) = match (&args.at, &args.grid) {
             (Some(path), _) => {
-                let (values, lines) = crate::case::read_csv(path, "--at", &["x", "z"], MAX_POINTS)?;
+                let table = Table::File {
+                    field: "--at".into(),
+                    path: path.clone(),
+                };
+                let (values, lines) = read_csv(&table, &["x", "z"], MAX_POINTS)?;
                 let (x, z): (Vec<f64>, Vec<f64>) = values.chunks(2).map(|c| (c[0], c[1])).unzip();
                 let origin = Origin::File {
                     path: path.clone(),
@@ -78,7 +87,7 @@ impl StressConfig {
             z,
             origin,
             units: case.units,
-            format: args.format.format(),
+            format: args.format.format().into(),
         })
     }
 }
@@ -206,66 +215,6 @@ pub fn grid(text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
         }
     }
     Ok((x, z))
-}
-
-/// The increment `step` names (1-based; the last when None), checked against the history's
-/// increments; errors name the option or argument `name`.
-pub fn check_step(step: Option<usize>, history: &History, name: &str) -> Result<usize> {
-    let last = history.loads().len();
-    let step = step.unwrap_or(last);
-    if step == 0 || step > last {
-        bail!("invalid {name} {step}: the history has increments 1 to {last}");
-    }
-    Ok(step)
-}
-
-/// Marches `history` to increment `step` (1-based) and evaluates the stresses at the points
-/// `(x[i], z[i])` (z the depth, >= 0): the report `halfplane stress` prints, which the Python
-/// package returns too. The stresses are those of [`stress::field`] (its sign conventions: tension
-/// positive, the bulk tension included in sxx, syy = nu (sxx + szz) in plane strain).
-pub fn report(
-    contact: &Contact,
-    history: &History,
-    options: &MarchOptions,
-    step: usize,
-    x: &[f64],
-    z: &[f64],
-    units: &Units,
-) -> Result<StressReport> {
-    if x.len() != z.len() {
-        bail!(
-            "the points have {} x values but {} z values; give one z per x",
-            x.len(),
-            z.len()
-        );
-    }
-    let kept = stress::marched(contact, history, options, &[step])?;
-    let state = kept
-        .into_iter()
-        .next()
-        .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
-    let bulk = state.load.bulk();
-    let field = stress::field(&state.traction, bulk, &contact.material(), x, z)
-        .context("evaluating the stresses")?;
-    let points = (0..x.len())
-        .map(|i| StressRow {
-            x: x[i],
-            z: z[i],
-            sxx: field.sxx[i],
-            szz: field.szz[i],
-            syy: field.syy[i],
-            sxz: field.sxz[i],
-        })
-        .collect();
-    Ok(StressReport {
-        step: state.step,
-        normal: state.load.normal(),
-        shear: state.load.shear(),
-        bulk,
-        half_width: state.half_width,
-        points,
-        units: units.clone(),
-    })
 }
 
 /// Points evaluated and written at a time: the output streams (a reader that stops after the

@@ -13,7 +13,7 @@
 //! of arguments with a non-negative imaginary part give the limit from the body on the surface. A
 //! right edge is the mirror image: `F(zeta) = -conj(F~(-conj(zeta)))` with `F~` the left-edge form.
 
-use super::complex::C;
+use num_complex::Complex64;
 
 /// One interval next to a contact edge.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,30 +51,37 @@ impl SqrtEdge {
             (z, z == 0.0)
         };
         if self.length > 0.0 {
-            let (f, d) = left(C((x - self.edge) / h, z / h), surface);
-            ([f.0, f.1], [d.0 / h, d.1 / h])
+            let (f, d) = left(Complex64::new((x - self.edge) / h, z / h), surface);
+            ([f.re, f.im], [d.re / h, d.im / h])
         } else {
             // Mirror: F(zeta) = -conj(F~(-conj(zeta))), F'(zeta) = conj(F~'(-conj(zeta))).
-            let (f, d) = left(C((self.edge - x) / h, z / h), surface);
-            ([-f.0, f.1], [d.0 / h, -d.1 / h])
+            let (f, d) = left(Complex64::new((self.edge - x) / h, z / h), surface);
+            ([-f.re, f.im], [d.re / h, -d.im / h])
         }
     }
 }
 
 /// `(F, h F')` of the left-edge correction with unit value at `omega` (see the module's formula).
-fn left(omega: C, surface: bool) -> (C, C) {
-    let one = C(1.0, 0.0);
-    if surface && omega.0 == 0.0 {
-        return (C(-1.0, 0.0), C(0.0, 0.0));
+fn left(omega: Complex64, surface: bool) -> (Complex64, Complex64) {
+    let one = Complex64::new(1.0, 0.0);
+    if surface && omega.re == 0.0 {
+        return (Complex64::new(-1.0, 0.0), Complex64::new(0.0, 0.0));
     }
-    if surface && omega.0 == 1.0 {
+    if surface && omega.re == 1.0 {
         // The limits of the cancelling logarithms at the inner node: -1 + 2 ln 2.
-        return (C(-1.0 + 2.0 * std::f64::consts::LN_2, 0.0), C(0.0, 0.0));
+        return (
+            Complex64::new(-1.0 + 2.0 * std::f64::consts::LN_2, 0.0),
+            Complex64::new(0.0, 0.0),
+        );
     }
     let s = omega.sqrt();
     let g = ((s + one).ln() - (s - one).ln()).scale(0.5) / s;
     let logs = omega.ln() - (omega - one).ln();
-    let f = C(-1.0, 0.0) + (omega * g).scale(2.0) - omega * logs;
-    let d = if surface { C(0.0, 0.0) } else { g - logs };
+    let f = Complex64::new(-1.0, 0.0) + (omega * g).scale(2.0) - omega * logs;
+    let d = if surface {
+        Complex64::new(0.0, 0.0)
+    } else {
+        g - logs
+    };
     (f, d)
 }

@@ -16,10 +16,10 @@
 //! remainder of `F` is below `4^-32/(1 - 1/4) = 7e-20` of `integral |rho| / r`, and that of
 //! `z F'` (each term `n + 1` times larger) below `3e-18` of it.
 
-use super::complex::C;
 use super::fast::expansion::Expansions;
 use super::strip::{stresses, Sums};
 use super::traction::Traction;
+use num_complex::Complex64;
 
 /// Points at least this many half-spans from the span's centre take the far field.
 pub(super) const FAR_RADII: f64 = 4.0;
@@ -92,13 +92,13 @@ impl FarField {
 
     /// `[sxx, szz, sxz]` from the traction at a point that [`FarField::reaches`] (`z >= 0`).
     pub fn in_plane(&self, x: f64, z: f64) -> [f64; 3] {
-        let y = C(self.scale, 0.0) / C(x - self.centre, z);
+        let y = Complex64::new(self.scale, 0.0) / Complex64::new(x - self.centre, z);
         let f = self.ex.m2p(&self.moments, y, self.scale);
         let s = Sums {
-            fp: [f[0].0, f[0].1],
-            dp: [f[1].0, f[1].1],
-            fq: [f[2].0, f[2].1],
-            dq: [f[3].0, f[3].1],
+            fp: [f[0].re, f[0].im],
+            dp: [f[1].re, f[1].im],
+            fq: [f[2].re, f[2].im],
+            dq: [f[3].re, f[3].im],
         };
         stresses(&s, z)
     }

@@ -29,7 +29,6 @@
 //! ```
 
 pub mod closed_form;
-mod complex;
 mod edge;
 mod far;
 mod fast;

@@ -14,9 +14,9 @@
 //! `log`; here for its derivative `1/(zeta - xi)`). A multipole holds `[m_p; m_q]` (2 `order`
 //! reals), a local expansion `[l_p; l_q]` (2 `order` complex numbers).
 
-use super::super::complex::C;
 use super::super::edge::SqrtEdge;
 use crate::quadrature::Rule;
+use num_complex::Complex64;
 
 /// Most terms an expansion may have.
 pub(super) const MAX_ORDER: usize = 64;
@@ -144,19 +144,19 @@ impl Expansions {
 
     /// Adds to the local expansion `local` (width `s`, centre `t`) the field of the multipole `m`
     /// (width `s`, centre `c`), `y0 = s/(t - c)`: `l_k += (1/s) (-y0)^k sum_n C(n + k, k) m_n y0^(n+1)`.
-    pub fn m2l(&self, local: &mut [C], m: &[f64], y0: C, s: f64) {
+    pub fn m2l(&self, local: &mut [Complex64], m: &[f64], y0: Complex64, s: f64) {
         let (p, stride) = (self.order, self.stride);
         // a_n = m_n y0^(n+1) for p and q, real and imaginary parts apart (zero-padded lanes).
         let mut a = [[0.0; MAX_ORDER]; 4];
         let mut pw = y0;
         for n in 0..p {
-            a[0][n] = pw.0 * m[n];
-            a[1][n] = pw.1 * m[n];
-            a[2][n] = pw.0 * m[p + n];
-            a[3][n] = pw.1 * m[p + n];
-            pw = pw * y0;
+            a[0][n] = pw.re * m[n];
+            a[1][n] = pw.im * m[n];
+            a[2][n] = pw.re * m[p + n];
+            a[3][n] = pw.im * m[p + n];
+            pw *= y0;
         }
-        let mut f = C(1.0 / s, 0.0);
+        let mut f = Complex64::new(1.0 / s, 0.0);
         let minus = -y0;
         for k in 0..p {
             let row = &self.m2l[k * stride..(k + 1) * stride];
@@ -170,15 +170,15 @@ impl Expansions {
                 }
             }
             let [sp_re, sp_im, sq_re, sq_im] = acc.map(|l| (l[0] + l[1]) + (l[2] + l[3]));
-            local[k] += f * C(sp_re, sp_im);
-            local[p + k] += f * C(sq_re, sq_im);
-            f = f * minus;
+            local[k] += f * Complex64::new(sp_re, sp_im);
+            local[p + k] += f * Complex64::new(sq_re, sq_im);
+            f *= minus;
         }
     }
 
     /// The child's local expansion (width `s/2`, centre `t + delta s`) from its parent's (width
     /// `s`, centre `t`): a Taylor shift by `delta`, then `tau_parent = tau_child/2`.
-    pub fn l2l(&self, child: &mut [C], parent: &[C], delta: C) {
+    pub fn l2l(&self, child: &mut [Complex64], parent: &[Complex64], delta: Complex64) {
         let p = self.order;
         for half in [0, p] {
             let b = &mut child[half..half + p];
@@ -198,9 +198,9 @@ impl Expansions {
     }
 
     /// `[F_p, F_p', F_q, F_q']` from the local expansion `local` (width `s`) at `tau`.
-    pub fn l2p(&self, local: &[C], tau: C, s: f64) -> [C; 4] {
+    pub fn l2p(&self, local: &[Complex64], tau: Complex64, s: f64) -> [Complex64; 4] {
         let p = self.order;
-        let zero = C::default();
+        let zero = Complex64::default();
         let (mut fp, mut dp, mut fq, mut dq) = (zero, zero, zero, zero);
         for m in (0..p).rev() {
             dp = dp * tau + fp;
@@ -213,15 +213,15 @@ impl Expansions {
 
     /// `[F_p, F_p', F_q, F_q']` from the multipole `m` (width `s`) at `y = s/(zeta - c)`:
     /// with `G(y) = sum_n m_n y^n`, `F = (y/s) G` and `F' = -(y/s)^2 (G + y G')`.
-    pub fn m2p(&self, m: &[f64], y: C, s: f64) -> [C; 4] {
+    pub fn m2p(&self, m: &[f64], y: Complex64, s: f64) -> [Complex64; 4] {
         let p = self.order;
-        let zero = C::default();
+        let zero = Complex64::default();
         let (mut gp, mut dp, mut gq, mut dq) = (zero, zero, zero, zero);
         for n in (0..p).rev() {
             dp = dp * y + gp;
-            gp = gp * y + C(m[n], 0.0);
+            gp = gp * y + Complex64::new(m[n], 0.0);
             dq = dq * y + gq;
-            gq = gq * y + C(m[p + n], 0.0);
+            gq = gq * y + Complex64::new(m[p + n], 0.0);
         }
         let ys = y.scale(1.0 / s);
         let ys2 = -(ys * ys);

@@ -23,12 +23,12 @@
 
 pub(super) mod expansion;
 
-use super::complex::C;
 use super::edge::SqrtEdge;
 use super::far::FarField;
 use super::strip::{add_edge, add_node, stresses, Sums};
 use super::traction::Traction;
 use expansion::{Expansions, MAX_ORDER};
+use num_complex::Complex64;
 
 /// Source boxes within this many columns (and target boxes within this many rows of the surface)
 /// are near neighbours, summed exactly.
@@ -320,7 +320,7 @@ impl<'a> Tree<'a> {
             }
             let u = x - self.origin;
             if u < 0.0 || u >= self.width || z >= self.width {
-                let y = C(self.width, 0.0) / C(x - centre, z);
+                let y = Complex64::new(self.width, 0.0) / Complex64::new(x - centre, z);
                 let f = self.ex.m2p(root, y, self.width);
                 out[index] = stresses(&sums_of(f), z);
                 continue;
@@ -331,7 +331,7 @@ impl<'a> Tree<'a> {
                 index,
             });
         }
-        let zero = vec![C::default(); 2 * self.ex.order];
+        let zero = vec![Complex64::default(); 2 * self.ex.order];
         self.descend(0, 0, 0, &zero, &mut inside, x, z, &mut out, &mut bad);
         if bad == usize::MAX {
             Ok(out)
@@ -347,7 +347,7 @@ impl<'a> Tree<'a> {
         l: usize,
         i: u64,
         k: u64,
-        local: &[C],
+        local: &[Complex64],
         targets: &mut [Target],
         x: &[f64],
         z: &[f64],
@@ -357,7 +357,7 @@ impl<'a> Tree<'a> {
         let p = self.ex.order;
         let shift = self.finest - l - 1;
         let w = self.width / (1u64 << (l + 1)) as f64;
-        let mut child_local = vec![C::default(); 2 * p];
+        let mut child_local = vec![Complex64::default(); 2 * p];
         let split = partition(targets, |t| (t.i >> shift) & 1 == 0);
         let (left, right) = targets.split_at_mut(split);
         for (ci, half) in [(2 * i, left), (2 * i + 1, right)] {
@@ -370,9 +370,9 @@ impl<'a> Tree<'a> {
                 let tx = self.origin + (ci as f64 + 0.5) * w;
                 let tz = (ck as f64 + 0.5) * w;
                 if l == 0 {
-                    child_local.fill(C::default());
+                    child_local.fill(Complex64::default());
                 } else {
-                    let delta = C(
+                    let delta = Complex64::new(
                         if ci & 1 == 0 { -0.25 } else { 0.25 },
                         if ck & 1 == 0 { -0.25 } else { 0.25 },
                     );
@@ -389,7 +389,7 @@ impl<'a> Tree<'a> {
                         continue;
                     }
                     let c = self.origin + (j as f64 + 0.5) * w;
-                    let y0 = C(w, 0.0) / C(tx - c, tz);
+                    let y0 = Complex64::new(w, 0.0) / Complex64::new(tx - c, tz);
                     let m = &level.multipoles[slot * 2 * p..(slot + 1) * 2 * p];
                     self.ex.m2l(&mut child_local, m, y0, w);
                 }
@@ -405,9 +405,11 @@ impl<'a> Tree<'a> {
                     for t in group.iter() {
                         let (px, pz) =
                             (x[t.index], if z[t.index] == 0.0 { 0.0 } else { z[t.index] });
-                        let f = self
-                            .ex
-                            .l2p(&child_local, C((px - tx) / w, (pz - tz) / w), w);
+                        let f = self.ex.l2p(
+                            &child_local,
+                            Complex64::new((px - tx) / w, (pz - tz) / w),
+                            w,
+                        );
                         let mut s = sums_of(f);
                         if let Some((e0, e1)) = near {
                             if e1 > e0 && !self.near(&mut s, e0, e1, px, pz) {
@@ -421,9 +423,11 @@ impl<'a> Tree<'a> {
                     for t in group.iter() {
                         let (px, pz) =
                             (x[t.index], if z[t.index] == 0.0 { 0.0 } else { z[t.index] });
-                        let f = self
-                            .ex
-                            .l2p(&child_local, C((px - tx) / w, (pz - tz) / w), w);
+                        let f = self.ex.l2p(
+                            &child_local,
+                            Complex64::new((px - tx) / w, (pz - tz) / w),
+                            w,
+                        );
                         let mut s = sums_of(f);
                         let mut direct = (i64::MAX, i64::MIN);
                         for j in ci - NEAR..=ci + NEAR {
@@ -474,7 +478,10 @@ impl<'a> Tree<'a> {
         if level.radius[slot] <= self.ratio * (x - c).hypot(z) {
             let p = self.ex.order;
             let m = &level.multipoles[slot * 2 * p..(slot + 1) * 2 * p];
-            let add = sums_of(self.ex.m2p(m, C(w, 0.0) / C(x - c, z), w));
+            let add = sums_of(
+                self.ex
+                    .m2p(m, Complex64::new(w, 0.0) / Complex64::new(x - c, z), w),
+            );
             for k in 0..2 {
                 s.fp[k] += add.fp[k];
                 s.dp[k] += add.dp[k];
@@ -515,12 +522,12 @@ impl<'a> Tree<'a> {
     }
 }
 
-fn sums_of(f: [C; 4]) -> Sums {
+fn sums_of(f: [Complex64; 4]) -> Sums {
     Sums {
-        fp: [f[0].0, f[0].1],
-        dp: [f[1].0, f[1].1],
-        fq: [f[2].0, f[2].1],
-        dq: [f[3].0, f[3].1],
+        fp: [f[0].re, f[0].im],
+        dp: [f[1].re, f[1].im],
+        fq: [f[2].re, f[2].im],
+        dq: [f[3].re, f[3].im],
     }
 }
 

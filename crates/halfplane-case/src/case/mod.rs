@@ -12,9 +12,10 @@ mod count;
 mod crack;
 mod csv;
 mod fatigue;
+mod table;
 
 use count::{count_in, RawCount};
-pub(crate) use csv::read_csv;
+pub use csv::{read_csv, Table};
 pub use fatigue::FatigueSettings;
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
@@ -40,6 +41,7 @@ struct RawCase {
 struct RawHistory {
     kind: Option<String>,
     file: Option<String>,
+    data: Option<String>,
     cycles: Option<RawCount>,
     max_cycles: Option<RawCount>,
     steady_tolerance: Option<f64>,
@@ -89,6 +91,7 @@ struct RawProfile {
     coefficient: Option<f64>,
     exponent: Option<f64>,
     file: Option<String>,
+    data: Option<String>,
     kinks: Option<Vec<f64>>,
 }
 
@@ -144,7 +147,7 @@ impl Case {
     /// The history and, for `history.cycles = "steady"`, the criterion to march it by (the
     /// history then holds its ramp and one cycle, which the march repeats).
     pub fn march_history(&self) -> Result<(History, Option<Steady>)> {
-        let history = self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\", or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))?;
+        let history = self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\" (or its rows as data = \"\"\"...\"\"\"), or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))?;
         Ok((history, self.until_steady.then_some(self.steady)))
     }
 
@@ -336,13 +339,13 @@ fn resolve_history(
     until_steady: bool,
     dir: &Path,
 ) -> Result<History> {
-    let kind = match (&h.kind, &h.file) {
+    let kind = match (&h.kind, h.file.is_some() || h.data.is_some()) {
         (Some(k), _) => k.clone(),
-        (None, Some(_)) => "file".to_string(),
-        (None, None) => bail!("missing field history.kind: give \"file\" (with file = ...), \"cycle\" or \"harmonic\""),
+        (None, true) => "file".to_string(),
+        (None, false) => bail!("missing field history.kind: give \"file\" (with file = ... or data = ...), \"cycle\" or \"harmonic\""),
     };
     let used: &[&str] = match kind.as_str() {
-        "file" => &["file"],
+        "file" => &["file", "data"],
         "cycle" => &[
             "cycles",
             "max_cycles",
@@ -367,6 +370,7 @@ fn resolve_history(
     };
     let given = [
         ("file", h.file.is_some()),
+        ("data", h.data.is_some()),
         ("cycles", h.cycles.is_some()),
         ("max_cycles", h.max_cycles.is_some()),
         ("steady_tolerance", h.steady_tolerance.is_some()),
@@ -400,31 +404,9 @@ fn resolve_history(
     };
     Ok(match kind.as_str() {
         "file" => {
-            let file = h.file.ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file"))?;
-            let path = dir.join(&file);
-            let (values, lines) = read_csv(
-                &path,
-                "history.file",
-                &["normal", "shear", "bulk"],
-                halfplane::history::MAX_INCREMENTS,
-            )?;
-            let rows: Vec<[f64; 3]> = values.chunks_exact(3).map(|r| [r[0], r[1], r[2]]).collect();
-            History::from_rows(&rows).map_err(|e| match e {
-                halfplane::Error::InvalidRow {
-                    row,
-                    column,
-                    value,
-                    valid,
-                    ..
-                } => {
-                    let line = lines.get(row.wrapping_sub(1)).copied().unwrap_or(0);
-                    anyhow!(
-                        "history.file {}, line {line}: {column} = {value}: must be {valid}",
-                        path.display()
-                    )
-                }
-                other => anyhow!("history.file {}: {other}", path.display()),
-            })?
+            let table = table::source("history", h.file.as_deref(), h.data.as_deref(), dir)?
+                .ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file, or its text as history.data"))?;
+            table::history_rows(&table)?
         }
         "cycle" => {
             let c = cycle.ok_or_else(|| {
@@ -493,7 +475,7 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
         "hertz" => &["radius"],
         "flat-rounded" => &["radius", "flat_half_width"],
         "power-law" => &["coefficient", "exponent"],
-        "tabulated" => &["file", "kinks"],
+        "tabulated" => &["file", "data", "kinks"],
         other => bail!("invalid profile.kind = \"{other}\": must be one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""),
     };
     let given = [
@@ -502,6 +484,7 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
         ("coefficient", p.coefficient.is_some()),
         ("exponent", p.exponent.is_some()),
         ("file", p.file.is_some()),
+        ("data", p.data.is_some()),
         ("kinks", p.kinks.is_some()),
     ];
     reject_unused("profile", &kind, used, &given)?;
@@ -524,27 +507,9 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
             required(p.exponent, "profile.exponent", "k >= 1 in g = B|x|^k")?,
         )?,
         _ => {
-            let file = p.file.ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file"))?;
-            let path = dir.join(&file);
-            let (values, lines) = read_csv(
-                &path,
-                "profile.file",
-                &["x", "g"],
-                halfplane::profile::MAX_TABLE_ROWS,
-            )?;
-            let (x, g) = values.chunks_exact(2).map(|r| (r[0], r[1])).unzip();
-            Profile::tabulated(x, g, p.kinks.unwrap_or_default()).map_err(|e| match e {
-                halfplane::Error::InvalidTable { row, problem }
-                    if row >= 1 && row <= lines.len() =>
-                {
-                    anyhow!(
-                        "profile.file {}, line {}: {problem}",
-                        path.display(),
-                        lines[row - 1]
-                    )
-                }
-                other => anyhow!("profile.file {}: {other}", path.display()),
-            })?
+            let table = table::source("profile", p.file.as_deref(), p.data.as_deref(), dir)?
+                .ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file, or its text as profile.data"))?;
+            table::profile_table(&table, p.kinks.unwrap_or_default())?
         }
     })
 }

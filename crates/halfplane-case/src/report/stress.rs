@@ -1,8 +1,7 @@
 //! The `stress` report: one row per point, columns `x,z,sxx,szz,syy,sxz` (a public interface),
 //! stresses in the case's stress unit.
 
-use super::{Cell, Column, Style};
-use crate::args::Format;
+use super::{Cell, Column, Format, Style};
 use crate::units::{Quantity, Units};
 use serde::Serialize;
 

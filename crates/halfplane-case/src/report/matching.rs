@@ -2,7 +2,7 @@
 //! serialization; the table shows it in words.
 
 use super::steady::{profile_report, ProfileReport};
-use crate::commands::matching::MatchConfig;
+use crate::matching::MatchConfig;
 use crate::units::{Quantity, Units};
 use halfplane::labels::{PerEdge, PerPoint};
 use halfplane::matching::{Compared, MatchReport, Side};

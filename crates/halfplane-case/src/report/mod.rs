@@ -1,4 +1,4 @@
-//! Reports, one module per command. Each report has one row type whose column list drives the
+//! Reports, one module per command (and per Python analysis). Each report has one row type whose column list drives the
 //! table, the CSV and the JSON alike: a [`Column`] names the CSV/JSON key, the table heading, the
 //! quantity (for the unit label) and the table format, and reads its cell from the row.
 
@@ -12,6 +12,17 @@ pub mod stress;
 
 use crate::units::{Quantity, Units};
 use std::fmt::Write;
+
+/// How a report is written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// A readable table.
+    Table,
+    /// Comma-separated values with a header row.
+    Csv,
+    /// One JSON object.
+    Json,
+}
 
 /// One value of a row.
 #[derive(Debug, Clone, PartialEq)]

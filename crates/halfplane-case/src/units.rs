@@ -74,16 +74,6 @@ impl Units {
         }
     }
 
-    /// The names the figures' axis labels show.
-    #[cfg(feature = "plot")]
-    pub fn plot(&self) -> halfplane_plot::Units {
-        halfplane_plot::Units {
-            force_per_length: self.force_per_length(),
-            length: self.length.clone(),
-            stress: self.stress.clone(),
-        }
-    }
-
     /// Resolves `[units]`: every name optional (defaults N, mm, MPa), and each non-empty, at most
     /// [`MAX_UNIT_CHARS`] characters, printable and without spaces or commas (so a label never
     /// breaks a table column or a CSV line).
