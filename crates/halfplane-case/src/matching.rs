@@ -152,8 +152,8 @@ pub fn test_contact(args: &TestOptions, prototype: &Contact) -> Result<Contact> 
             .unwrap_or(prototype.material().poisson_ratio()),
     )
     .map_err(option_error)?;
-    let friction =
-        Friction::new(args.friction.unwrap_or(prototype.friction().value())).map_err(option_error)?;
+    let friction = Friction::new(args.friction.unwrap_or(prototype.friction().value()))
+        .map_err(option_error)?;
     Ok(Contact::new(profile, material, friction))
 }
 
