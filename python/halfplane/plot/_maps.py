@@ -54,7 +54,9 @@ def _grid(x: npt.ArrayLike, z: npt.ArrayLike, shape: tuple[int, ...]) -> tuple[F
     return np.asarray(bx, dtype=np.float64), np.asarray(bz, dtype=np.float64)
 
 
-def _contour_field(ax: Axes, gx: Floats, gz: Floats, values: Floats, levels: int, label: str) -> None:
+def _contour_field(
+    ax: Axes, gx: Floats, gz: Floats, values: Floats, levels: int, label: str
+) -> None:
     """Filled contours over the grid (interpolated between grid points, so no staircase), every
     second level labelled on a contour line, and a colour bar from the smallest to the largest
     value; a range of both signs gets a diverging map centred on zero."""
@@ -398,7 +400,8 @@ def design_map(
     if color == "regime":
         codes, regime = _regime_codes(rows)
         cmap = mpl.colors.ListedColormap(list(_REGIME_COLOURS.values()))
-        norm = mpl.colors.BoundaryNorm(np.arange(len(_REGIME_COLOURS) + 1) - 0.5, len(_REGIME_COLOURS))
+        bounds = np.arange(len(_REGIME_COLOURS) + 1) - 0.5
+        norm = mpl.colors.BoundaryNorm(bounds, len(_REGIME_COLOURS))
         if grid:
             cells[index] = codes
             ax.pcolormesh(_cell_edges(ux), _cell_edges(uy), cells, cmap=cmap, norm=norm)
@@ -436,6 +439,8 @@ def design_map(
     ax.set_ylabel(_describe(y, names))
     plain_axis(ax.xaxis)
     plain_axis(ax.yaxis)
-    shown = ", ".join(f"{_describe(k, names)} = {plain(float(v))}" for k, v in (where or {}).items())
+    shown = ", ".join(
+        f"{_describe(k, names)} = {plain(float(v))}" for k, v in (where or {}).items()
+    )
     ax.set_title(title + (f"\n{shown}" if shown else ""), fontsize=10)
     return ax
