@@ -48,9 +48,11 @@ myst_heading_anchors = 3
 # Types of other libraries named in signatures: the build has no network for their inventories.
 nitpick_ignore_regex = [
     (r"py:.*", r"(pandas|pd|numpy|np|npt|matplotlib|os|typing|typing_extensions|collections\.abc)\..*"),
-    (r"py:class", r"(Axes|Figure|Floats|PathLike|ArrayLike|NDArray|DataFrame|ndarray)"),
+    (r"py:class", r"(Axes|Figure|Floats|FloatArray|PathLike|ArrayLike|NDArray|DataFrame|ndarray)"),
     (r"py:class", r"halfplane\._halfplane\.Case"),
     (r"py:class", r"optional"),
+    # The type variable of the generic records (Edges[T], PerPoint[T]).
+    (r"py:class", r"T"),
 ]
 
 def _repository_files() -> list[str]:

@@ -189,3 +189,11 @@ __all__ = [
     "steady_batch",
     "stress",
 ]
+
+# The result classes and their parts are known by their public path (halfplane.StickZone, not
+# halfplane._results.StickZone): in the API reference, in reprs of types and in new pickles (old
+# pickles name the private modules, which still hold the classes).
+for _name in __all__:
+    _object = globals()[_name]
+    if isinstance(_object, type) and _object.__module__.startswith("halfplane._"):
+        _object.__module__ = __name__
