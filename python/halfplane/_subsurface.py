@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import numbers
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar, Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
@@ -147,15 +147,24 @@ class FatigueResult(Record):
     line_method, cycles, tilt`` (``plane`` in degrees from +x towards +z, ``tilt`` of the plane's
     normal towards +y, 0 unless ``[fatigue] planes = "3d"``; NaN where a column does not apply;
     each access returns a copy). ``to_dict()`` is the ``--json`` object (``parameters`` as a
-    list of row objects, None where a column does not apply)."""
+    list of row objects, None where a column does not apply).
 
-    _EXTRA: ClassVar[Tuple[str, ...]] = ("_table",)
+    The fields behind the maxima, over the ``[fatigue]`` grid: ``grid_x`` and ``grid_z`` (its
+    axes, float64) and ``maps``, each grid parameter's name (``"swt"``, ``"mwcm"``, ... as in
+    ``parameters``; Ruiz is a surface quantity and has none) to its values over the steady
+    cycle, a float64 array of shape ``(len(grid_z), len(grid_x))``: what ``halfplane plot
+    fatigue-map`` contours. They are not part of ``to_dict()``."""
+
+    _EXTRA: ClassVar[Tuple[str, ...]] = ("_table", "grid_x", "grid_z", "maps")
 
     critical_distance: Optional[float]
     first_step: int
     last_step: int
     _table: pd.DataFrame
     units: Units
+    grid_x: FloatArray = field(default_factory=lambda: np.empty(0))
+    grid_z: FloatArray = field(default_factory=lambda: np.empty(0))
+    maps: Mapping[str, FloatArray] = field(default_factory=dict)
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> FatigueResult:
@@ -166,6 +175,14 @@ class FatigueResult(Record):
             last_step=int(data["last_step"]),
             _table=_frame(data["parameters"], _PARAMETER_DTYPES),
             units=Units._from(data["units"]),
+            grid_x=np.asarray(data["grid_x"], dtype=np.float64),
+            grid_z=np.asarray(data["grid_z"], dtype=np.float64),
+            maps={
+                name: np.asarray(values, dtype=np.float64).reshape(
+                    len(data["grid_z"]), len(data["grid_x"])
+                )
+                for name, values in data["maps"].items()
+            },
         )
 
     @property

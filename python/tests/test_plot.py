@@ -266,6 +266,22 @@ def test_fatigue_map_marks_each_maximum_and_its_plane():
             assert angle == pytest.approx(row.plane % 180.0, abs=1e-9)
     assert any(ln.get_label().startswith("mwcm = ") and " MPa" in ln.get_label() for ln in ax.get_lines())
     assert ax.get_aspect() == 1.0 and ax.yaxis_inverted()
+    # The field under the maxima: the first drawn parameter with a map, over the whole grid.
+    shaded = next(p for p in table.parameter if p in result.maps)
+    filled = next(c for c in ax.collections if hasattr(c, "levels") and c.filled)
+    values = result.maps[shaded]
+    assert values.shape == (len(result.grid_z), len(result.grid_x))
+    assert (filled.norm.vmin, filled.norm.vmax) == (values.min(), values.max())
+    assert ax.get_xlim() == (result.grid_x.min(), result.grid_x.max())
+    # Each parameter's reported maximum is the largest value of its map (the maps are what the
+    # maxima are taken over, to the last bit).
+    for name, values in result.maps.items():
+        row = table[table.parameter == name].iloc[0]
+        assert values.max() == row.value, name
+    mwcm = plot.fatigue_map(result, field="mwcm")
+    assert mwcm.get_title().endswith("shaded: mwcm")
+    with pytest.raises(ValueError, match="invalid field = 'ruiz_f2'"):
+        plot.fatigue_map(result, field="ruiz_f2")
     only = plot.fatigue_map(result, ["swt"])
     assert next(ln.get_label().split(" =")[0] for ln in only.get_lines() if "=" in ln.get_label()) == "swt"
     with pytest.raises(ValueError, match="invalid parameter 'wst'"):

@@ -66,8 +66,9 @@ pub fn stress_points<'py>(
 }
 
 /// `halfplane fatigue CASE --cells CELLS`: the `--json` report as a dict whose `parameters` are
-/// one array per `--csv` column, and the lines the command writes on stderr for the parameters
-/// `[fatigue]` leaves out.
+/// one array per `--csv` column, plus `grid_x`, `grid_z` and `maps` (each grid parameter's
+/// values over the `[fatigue]` grid, row after row, z outer), and the lines the command writes on
+/// stderr for the parameters `[fatigue]` leaves out.
 #[pyfunction]
 #[pyo3(signature = (case, cells=None))]
 pub fn fatigue_report<'py>(
@@ -99,5 +100,14 @@ pub fn fatigue_report<'py>(
     let out = summary.into_py(py)?;
     let columns = convert::columns(py, &rows, &csv_keys(&FatigueRow::COLUMNS))?;
     out.set_item("parameters", columns)?;
+    // The fields behind the maxima (what `plot fatigue-map` contours): the grid's axes and each
+    // grid parameter's values row after row (z outer), kept out of the `--json` object.
+    out.set_item("grid_x", PyArray1::from_slice(py, &result.grid_x))?;
+    out.set_item("grid_z", PyArray1::from_slice(py, &result.grid_z))?;
+    let maps = PyDict::new(py);
+    for (parameter, values) in &result.maps {
+        maps.set_item(parameter.name(), PyArray1::from_slice(py, values))?;
+    }
+    out.set_item("maps", maps)?;
     Ok((out, settings.skipped()))
 }

@@ -177,25 +177,39 @@ def fatigue_map(
     parameters: Sequence[str] | None = None,
     *,
     half_width: float | None = None,
+    field: str | None = None,
+    levels: int = 10,
     units: Mapping[str, str] | None = None,
     ax: Axes | None = None,
 ) -> Axes:
     """Where each fatigue parameter peaks over the steady cycle, in the x-z plane below the
-    contact (equal scales, depth downwards): the place of each maximum (a star; parameters
-    peaking at one place share it), the critical plane through it (a line along the plane, at
-    ``plane`` degrees from +x towards +z) and, when the critical distance L is known, the line
-    0 <= z <= 2L below it that the line method averages over. The legend gives each value in
-    plain notation.
+    contact (equal scales, depth downwards), over the filled contours of one parameter's field:
+    the place of each maximum (a star; parameters peaking at one place share it), the critical
+    plane through it (a line along the plane, at ``plane`` degrees from +x towards +z) and, when
+    the critical distance L is known, the line 0 <= z <= 2L below it that the line method
+    averages over. The legend gives each value in plain notation.
 
     ``result`` is :func:`halfplane.fatigue`; ``parameters`` picks rows of its ``parameters``
-    table (default every row with a place). The package reports each parameter's maximum, not
-    its field: the contours over the ``[fatigue]`` grid are ``halfplane plot fatigue-map``.
+    table (default every row with a place). ``field`` names the parameter whose values over the
+    ``[fatigue]`` grid (``result.maps``) are shaded, with a colour bar (default: the first
+    drawn parameter that has a map; Ruiz has none); ``levels`` is about how many colour bands.
     With ``half_width`` (the largest contact half-width of the cycle) the contact is drawn on
     the surface. Returns the Axes.
     """
     table = _fatigue_rows(result, parameters)
     _, length, stress = unit_names(units)
+    if field is not None and field not in result.maps:
+        raise ValueError(
+            f"invalid field = {field!r}: the result has maps of {', '.join(result.maps) or 'none'}"
+        )
+    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
+        raise ValueError(f"invalid levels = {levels!r}: must be a whole number >= 2")
+    shaded = field or next((str(p) for p in table["parameter"] if p in result.maps), None)
     ax = new_axes(ax, (8.0, 4.2))
+    if shaded is not None:
+        gx, gz = np.meshgrid(result.grid_x, result.grid_z)
+        unit = f" ({stress})" if shaded in _STRESS_PARAMETERS else ""
+        _contour_field(ax, gx, gz, result.maps[shaded], levels, f"{shaded}{unit}")
     xs, zs = floats(table, "x"), floats(table, "z")
     a = float(half_width) if half_width is not None else 0.0
     critical = result.critical_distance
@@ -228,19 +242,30 @@ def fatigue_map(
     if half_width is not None:
         ax.plot([-a, a], [0.0, 0.0], "-", color="0.3", lw=4, solid_capstyle="butt",
                 label=f"contact, a = {plain(a)} {length}", zorder=3)
-    middle = 0.5 * (float(xs.min()) + float(xs.max()))
-    half = 0.5 * float(np.ptp(xs)) + span
-    ax.set_xlim(middle - half, middle + half)
-    ax.set_ylim(max(float(zs.max()), depth) + 0.5 * span, -0.2 * span)
+    if shaded is not None:
+        # The grid's extent: the field is the picture, the maxima sit on it.
+        ax.set_xlim(float(result.grid_x.min()), float(result.grid_x.max()))
+        ax.set_ylim(float(result.grid_z.max()), float(result.grid_z.min()))
+    else:
+        middle = 0.5 * (float(xs.min()) + float(xs.max()))
+        half = 0.5 * float(np.ptp(xs)) + span
+        ax.set_xlim(middle - half, middle + half)
+        ax.set_ylim(max(float(zs.max()), depth) + 0.5 * span, -0.2 * span)
     ax.set_aspect("equal")
     ax.set_xlabel(f"position x ({length})")
     ax.set_ylabel(f"depth z ({length})")
     ax.axhline(0.0, color="0.6", lw=0.8, zorder=0)
+    over = f"; shaded: {shaded}" if shaded is not None else ""
     ax.set_title(
-        f"Maxima over the steady cycle (steps {result.first_step}–{result.last_step})",
+        f"Maxima over the steady cycle (steps {result.first_step}–{result.last_step}){over}",
         fontsize=10,
     )
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+    # Beside the axes, or below them when the colour bar takes the right-hand side.
+    if shaded is not None:
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.18), frameon=False,
+                  ncol=2)
+    else:
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
     return ax
 
 
