@@ -23,4 +23,4 @@ a = halfplane.steady(case).contact.half_width_2
 x = np.linspace(-1.5 * a, 1.5 * a, 121)
 z = np.linspace(0.0, a, 61)
 below = halfplane.stress(case, x=x[None, :], z=z[:, None], step=110, cells=200)
-halfplane.plot.stress_map(below, x, z, "sxx")
+halfplane.plot.stress_map(below, component="sxx")

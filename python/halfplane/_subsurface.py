@@ -39,9 +39,16 @@ class StressResult:
     ``x`` runs in the sense of positive Q, ``z`` is the depth, and the surface shear traction is
     the one the other body exerts on this one, positive in +x (docs/stress.md). ``step`` is the
     increment used (1-based) and ``normal``, ``shear``, ``bulk``, ``half_width`` its load and
-    contact half-width. ``to_dict()`` gives them all, arrays included."""
+    contact half-width; ``x`` and ``z`` are the points, broadcast to the same shape.
+    ``to_dict()`` gives them all, arrays included."""
 
-    def __init__(self, data: Mapping[str, Any], shape: Tuple[int, ...]) -> None:
+    def __init__(
+        self,
+        data: Mapping[str, Any],
+        shape: Tuple[int, ...],
+        x: Optional[FloatArray] = None,
+        z: Optional[FloatArray] = None,
+    ) -> None:
         self.step: int = int(data["step"])
         self.normal: float = float(data["normal"])
         self.shear: float = float(data["shear"])
@@ -51,6 +58,9 @@ class StressResult:
         self.szz: FloatArray = data["szz"].reshape(shape)
         self.syy: FloatArray = data["syy"].reshape(shape)
         self.sxz: FloatArray = data["sxz"].reshape(shape)
+        nan = np.full(shape, np.nan)
+        self.x: FloatArray = nan if x is None else np.asarray(x, dtype=np.float64).reshape(shape)
+        self.z: FloatArray = nan if z is None else np.asarray(z, dtype=np.float64).reshape(shape)
 
     def to_dict(self) -> Dict[str, Any]:
         """The fields by name (the arrays are the result's own)."""
@@ -103,7 +113,8 @@ def stress(
         step = _count("step", step)
     if cells is not None:
         cells = _count("cells", cells)
-    return StressResult(_halfplane.stress_points(case, flat_x, flat_z, step, cells), shape)
+    data = _halfplane.stress_points(case, flat_x, flat_z, step, cells)
+    return StressResult(data, shape, flat_x, flat_z)
 
 
 #: The ``fatigue --csv`` columns that are empty (NaN) where they do not apply; None in the JSON.

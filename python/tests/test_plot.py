@@ -230,6 +230,15 @@ def test_stress_map_fills_the_field_with_its_range_on_the_colour_bar(below):
     assert list(contact.get_xdata()) == [-result.half_width, result.half_width]
     assert ax.get_aspect() == 1.0 and ax.yaxis_inverted()
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("position x (mm)", "depth z (mm)")
+    # The result's own points (the broadcast x and z it keeps) draw the same map.
+    own = filled_contours(plot.stress_map(result, component="sxx"))
+    assert np.array_equal(result.x, np.broadcast_to(xs[None, :], result.sxx.shape))
+    assert np.array_equal(result.z, np.broadcast_to(zs[:, None], result.sxx.shape))
+    assert np.array_equal(own.levels, filled.levels)
+    assert all(np.array_equal(p.vertices, q.vertices)
+               for p, q in zip(own.get_paths(), filled.get_paths()))
+    with pytest.raises(ValueError, match="give both x and z"):
+        plot.stress_map(result, xs)
     # 2-D grids of the result's shape work the same.
     gx, gz = np.meshgrid(xs, zs)
     shear = plot.stress_map(result, gx, gz, "sxz")

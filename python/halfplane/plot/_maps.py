@@ -96,8 +96,8 @@ def _xz_axes(ax: Axes, length: str) -> None:
 
 def stress_map(
     result: StressResult,
-    x: npt.ArrayLike,
-    z: npt.ArrayLike,
+    x: npt.ArrayLike | None = None,
+    z: npt.ArrayLike | None = None,
     component: str = "sxx",
     *,
     levels: int = 14,
@@ -110,10 +110,11 @@ def stress_map(
     lines, equal scales in x and z, the depth z downwards, the contact -a <= x <= a drawn on
     the surface and the largest value marked (a star, with its value and place in the legend).
 
-    ``result`` is :func:`halfplane.stress` on a grid and ``x``, ``z`` that grid: the 1-D axes
-    (``stress(case, x=xs[None, :], z=zs[:, None])`` gives shape ``(len(zs), len(xs))``) or 2-D
-    arrays of the result's shape. ``levels`` is about how many colour bands. A range of both
-    signs gets a diverging colour map centred on zero. Returns the Axes.
+    ``result`` is :func:`halfplane.stress` on a grid (``stress(case, x=xs[None, :],
+    z=zs[:, None])`` gives shape ``(len(zs), len(xs))``); the grid is the result's own points
+    unless ``x``, ``z`` are given (the 1-D axes or 2-D arrays of the result's shape).
+    ``levels`` is about how many colour bands. A range of both signs gets a diverging colour
+    map centred on zero. Returns the Axes.
     """
     if component not in _COMPONENTS:
         raise ValueError(
@@ -122,7 +123,9 @@ def stress_map(
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
         raise ValueError(f"invalid levels = {levels!r}: must be a whole number >= 2")
     values = np.asarray(getattr(result, component), dtype=np.float64)
-    gx, gz = _grid(x, z, values.shape)
+    if (x is None) != (z is None):
+        raise ValueError("give both x and z, or neither (the result's own points)")
+    gx, gz = _grid(result.x if x is None else x, result.z if z is None else z, values.shape)
     _, length, stress = unit_names(units)
     name = _COMPONENTS[component]
     spans = (float(np.ptp(gx)), float(np.ptp(gz)))
