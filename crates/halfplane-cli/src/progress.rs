@@ -117,7 +117,8 @@ impl Progress {
 
 /// Runs `work`, printing `label: running, T elapsed` on stderr every interval until it returns,
 /// for a long computation with no count to report (`fatigue`, `stress` and `crack` march and
-/// integrate inside the library): a long run is never silent, on a terminal or not.
+/// integrate inside the library, as do the figures of `plot` that march): a long run is never
+/// silent, on a terminal or not.
 pub fn while_running<T>(label: &'static str, work: impl FnOnce() -> T) -> T {
     let every = interval().max(Duration::from_millis(100));
     let start = Instant::now();

@@ -137,6 +137,34 @@ fn fatigue_says_it_is_running_when_stderr_is_not_a_terminal() {
 }
 
 #[test]
+fn a_figure_that_marches_says_it_is_running() {
+    // Before, `plot march-zones` (and the other figures that march) printed nothing until the
+    // figure was written; now a line per interval, as the commands that march.
+    let dir = scratch("limits-plot-progress");
+    let out = dir.join("zones.svg");
+    let o = command(&[
+        "plot",
+        "march-zones",
+        &example("march-cycle.toml"),
+        // 1600 cells: about 1.8 s in the test build, many intervals of 0.1 s.
+        "--cells",
+        "1600",
+        "-o",
+        out.to_str().expect("utf-8 path"),
+    ])
+    .env("HALFPLANE_PROGRESS_SECONDS", "0.1")
+    .output()
+    .expect("run halfplane");
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("plot: running, "),
+        "no progress line in: {err}"
+    );
+    assert!(out.exists(), "no figure written");
+}
+
+#[test]
 fn the_cells_of_the_case_file_are_named_when_they_make_the_march_too_long() {
     let dir = scratch("limits-case-cells");
     let case = dir.join("case.toml");

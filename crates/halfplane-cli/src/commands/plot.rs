@@ -354,10 +354,19 @@ fn steps(history: &History, given: &[usize]) -> Result<Vec<usize>> {
     Ok(wanted)
 }
 
-/// Computes the figure, writes it and says where on stderr.
+/// Computes the figure, writes it and says where on stderr. The figures that march or integrate
+/// say they are running every progress interval, like the commands that do (`fatigue`).
 pub fn run(config: &PlotConfig) -> Result<()> {
+    let fig = crate::progress::while_running("plot", || figure(config))?;
+    halfplane_plot::write(&fig, &config.output)?;
+    note(&format!("wrote {}", config.output.display()));
+    Ok(())
+}
+
+/// The figure's data computed and laid out.
+fn figure(config: &PlotConfig) -> Result<halfplane_plot::Figure> {
     let (contact, units) = (&config.contact, &config.units);
-    let fig = match &config.figure {
+    Ok(match &config.figure {
         FigureConfig::LoadSpace { cycle } => {
             halfplane_plot::load_space_figure(contact, cycle, units)?
         }
@@ -429,8 +438,5 @@ pub fn run(config: &PlotConfig) -> Result<()> {
                 None => halfplane_plot::surface_profiles_figure(&result, units),
             }
         }
-    };
-    halfplane_plot::write(&fig, &config.output)?;
-    note(&format!("wrote {}", config.output.display()));
-    Ok(())
+    })
 }
