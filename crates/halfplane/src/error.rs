@@ -147,18 +147,21 @@ pub enum Error {
         limit: f64,
     },
 
-    /// The permanent stick zone found does not lie inside the smaller contact.
+    /// The permanent stick zone found does not lie inside both end contacts.
     #[error(
-        "the stick zone [-m, n] = [{left:.6}, {right:.6}] does not lie inside the smaller contact [-{smaller_half_width:.6}, {smaller_half_width:.6}] \
-         (the analysis requires -min(a1, a2) < -m < n < min(a1, a2); the zone need not contain x = 0)"
+        "the stick zone [-m, n] = [{left:.6}, {right:.6}] does not lie inside both contacts of the cycle, whose common \
+         part is [{:.6}, {:.6}] (the analysis requires max(b1) < -m < n < min(b2) over the two points, which is \
+         -min(a1, a2) < -m < n < min(a1, a2) without a moment; the zone need not contain x = 0)",
+        .common[0], .common[1]
     )]
     StickZoneOutsideContact {
         /// -m.
         left: f64,
         /// n.
         right: f64,
-        /// min(a1, a2).
-        smaller_half_width: f64,
+        /// The common part `[max(b1_1, b1_2), min(b2_1, b2_2)]` of the two points' contacts
+        /// (`[-min(a1, a2), min(a1, a2)]` without a moment on a symmetric profile).
+        common: [f64; 2],
     },
 
     /// Gross sliding at an end of the cycle, where an analysis needs partial slip.
@@ -403,6 +406,27 @@ pub enum Error {
 }
 
 impl Error {
+    /// The same error, a [`Error::MomentOutsideTable`] naming the moment `field` (for example
+    /// `cycle.point1.moment`) instead of the library's plain `moment`; other errors unchanged.
+    pub fn with_moment_field(self, field: &str) -> Self {
+        match self {
+            Error::MomentOutsideTable {
+                value,
+                normal,
+                smallest,
+                largest,
+                ..
+            } => Error::MomentOutsideTable {
+                field: field.into(),
+                value,
+                normal,
+                smallest,
+                largest,
+            },
+            other => other,
+        }
+    }
+
     /// `": cause"` for [`Error::NoValidMatch`]'s message, empty without one.
     fn cause_text(cause: &Option<Box<Error>>) -> String {
         cause

@@ -14,6 +14,7 @@ use crate::error::{Error, Result};
 use crate::labels::{display_as_str, Half, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
+use crate::normal_moment::NormalContact;
 use crate::steady::{self, Regime, Segment, SteadyOptions, StickZone};
 
 /// What the contact does at a point of the cycle.
@@ -58,6 +59,9 @@ pub struct EvolutionPoint {
     pub load: LoadPoint,
     /// Contact half-width a_X.
     pub half_width: f64,
+    /// The normal contact at this point (its ends `[b1, b2]`; `[-a_X, a_X]` without a moment on
+    /// a symmetric profile).
+    pub contact: NormalContact,
     /// What the contact does.
     pub state: PointState,
     /// Stick zone (the whole contact in full stick).
@@ -102,32 +106,27 @@ pub struct Evolution {
     pub warnings: Vec<EvolutionWarning>,
 }
 
-/// The state at a point of the partial path from the partial-path zone `z`, the bound `limit` =
-/// `min(a_s, a(t))` its boundaries must stay below to slip, and the contact half-width `a_x`: an
-/// edge slips when the zone's boundary there is inside the bound; the stick zone reported runs
-/// to the contact edge at an edge that does not slip.
-fn classify(z: StickZone, limit: f64, a_x: f64) -> (PointState, StickZone) {
+/// The state at a point of the partial path from the partial-path zone `z`, the bounds `limit`
+/// (the common part of the start's and the current contact, `[-min(a_s, a(t)), min(a_s, a(t))]`
+/// without a moment) its boundaries must stay inside to slip, and the current contact `whole`:
+/// an edge slips when the zone's boundary there is inside the bound; the stick zone reported
+/// runs to the contact edge at an edge that does not slip.
+fn classify(z: StickZone, limit: PerEdge<f64>, whole: StickZone) -> (PointState, StickZone) {
     let one_edge = |slipping| PointState::OneEdgeSlip { slipping };
-    match (-z.left < limit, z.right < limit) {
+    match (z.left > limit.left, z.right < limit.right) {
         (true, true) => (PointState::PartialSlip, z),
-        (false, false) => (
-            PointState::FullStick,
-            StickZone {
-                left: -a_x,
-                right: a_x,
-            },
-        ),
+        (false, false) => (PointState::FullStick, whole),
         (true, false) => (
             one_edge(Edge::Left),
             StickZone {
                 left: z.left,
-                right: a_x,
+                right: whole.right,
             },
         ),
         (false, true) => (
             one_edge(Edge::Right),
             StickZone {
-                left: -a_x,
+                left: whole.left,
                 right: z.right,
             },
         ),
@@ -174,30 +173,38 @@ pub fn evolve(
     let mut warnings = Vec::new();
     for half in Half::BOTH {
         let (start, end) = (given[half.start()], given[half.end()]);
-        let start_edges = EdgeState::at(contact, &start)?;
+        let start_contact = steady.contacts[half.start()];
+        let start_edges = EdgeState::of(&start, start_contact)?;
         let rising = end.shear() >= start.shear();
-        let mut guess = None;
+        let mut guess = Some((start_contact.half_width(), start_contact.centre()));
+        let mut near = start_contact;
         let mut previous: Option<StickZone> = None;
         let mut one_edge = 0;
         for j in 0..points_per_half {
             let fraction = j as f64 / (points_per_half - 1) as f64;
             let load = start.lerp(&end, fraction);
-            let now = EdgeState::at(contact, &load)?;
+            near = contact_along(contact, &load, &near)?;
+            let now = EdgeState::of(&load, near)?;
             let a_x = now.half_width;
             let whole = StickZone {
-                left: -a_x,
-                right: a_x,
+                left: near.end(Edge::Left),
+                right: near.end(Edge::Right),
             };
             let (mut state, mut zone) = (PointState::FullStick, whole);
             if steady.regime == Regime::PartialSlip && j > 0 {
+                let rotation = 0.5 * (start_contact.rotation() + near.rotation());
                 let segment = if rising {
-                    Segment::between(&start, &load)
+                    Segment::between(&start, &load, rotation)
                 } else {
-                    Segment::between(&load, &start)
+                    Segment::between(&load, &start, rotation)
                 };
                 let (z, _) = steady::stick_zone(contact, &segment, guess, options)?;
                 guess = Some((z.half_width(), z.eccentricity()));
-                (state, zone) = classify(z, start_edges.half_width.min(a_x), a_x);
+                let limit = PerEdge {
+                    left: start_contact.end(Edge::Left).max(whole.left),
+                    right: start_contact.end(Edge::Right).min(whole.right),
+                };
+                (state, zone) = classify(z, limit, whole);
                 if matches!(state, PointState::OneEdgeSlip { .. }) {
                     one_edge += 1;
                 }
@@ -221,7 +228,7 @@ pub fn evolve(
             }
             let slip = PerEdge::from_fn(|e| asymptotic::slip_zone_size(&start_edges, &now, f, e));
             let asymptotic_stick_zone = if steady.regime == Regime::PartialSlip {
-                asymptotic::stick_zone_from_slip(a_x, slip)
+                asymptotic::stick_zone_within(&near, slip)
             } else {
                 whole
             };
@@ -230,6 +237,7 @@ pub fn evolve(
                 fraction,
                 load,
                 half_width: a_x,
+                contact: near,
                 state,
                 stick_zone: zone,
                 asymptotic_stick_zone,
@@ -247,4 +255,14 @@ pub fn evolve(
         points,
         warnings,
     })
+}
+
+/// The contact at `load`, started from `near`, the contact at the previous point of the half
+/// (the ends of the half are the steady analysis's own contacts, so they agree exactly).
+fn contact_along(
+    contact: &Contact,
+    load: &LoadPoint,
+    near: &NormalContact,
+) -> Result<NormalContact> {
+    contact.contact_near(load.normal(), load.moment(), near)
 }

@@ -159,7 +159,7 @@ pub struct History {
 pub enum Ramp {
     /// P, Q and sigma in proportion.
     Proportional,
-    /// P first (Q = sigma = 0), then Q and sigma at constant P.
+    /// P (with its moment M) first, Q = sigma = 0; then Q and sigma at constant P and M.
     NormalFirst,
 }
 
@@ -239,9 +239,16 @@ fn total_increments(parts: &[(Option<usize>, &str)]) -> Result<usize> {
 }
 
 impl History {
-    /// Explicit rows `[normal, shear, bulk]`, validated as [`LoadPoint`]s are; an invalid value is
-    /// [`Error::InvalidRow`] with its 1-based row and column.
+    /// Explicit rows `[normal, shear, bulk]` (no moment), validated as [`LoadPoint`]s are; an
+    /// invalid value is [`Error::InvalidRow`] with its 1-based row and column.
     pub fn from_rows(rows: &[[f64; 3]]) -> Result<Self> {
+        let with_moment: Vec<[f64; 4]> = rows.iter().map(|r| [r[0], r[1], r[2], 0.0]).collect();
+        Self::from_moment_rows(&with_moment)
+    }
+
+    /// Explicit rows `[normal, shear, bulk, moment]`, validated as [`LoadPoint`]s are; an
+    /// invalid value is [`Error::InvalidRow`] with its 1-based row and column.
+    pub fn from_moment_rows(rows: &[[f64; 4]]) -> Result<Self> {
         if rows.is_empty() {
             return Err(Error::EmptyTable { what: "history" });
         }
@@ -252,10 +259,11 @@ impl History {
             });
         }
         type Check = fn(&str, f64) -> Result<f64>;
-        let checks: [(&'static str, Check); 3] = [
+        let checks: [(&'static str, Check); 4] = [
             ("normal", physical_positive),
             ("shear", physical),
             ("bulk", physical),
+            ("moment", physical),
         ];
         for (i, r) in rows.iter().enumerate() {
             for ((column, check), &value) in checks.iter().zip(r) {
@@ -272,7 +280,9 @@ impl History {
         }
         let loads = rows
             .iter()
-            .map(|r| LoadPoint::new("history row", r[0], r[1], r[2]))
+            .map(|r| {
+                LoadPoint::new("history row", r[0], r[1], r[2])?.with_moment("history row", r[3])
+            })
             .collect::<Result<_>>()?;
         Ok(Self {
             loads,
@@ -314,7 +324,8 @@ impl History {
                 loads.extend((1..=ramp_steps).map(|i| first.scaled(fraction(i, ramp_steps))))
             }
             Ramp::NormalFirst => {
-                let pressed = LoadPoint::new("history.ramp", first.normal(), 0.0, 0.0)?;
+                let pressed = LoadPoint::new("history.ramp", first.normal(), 0.0, 0.0)?
+                    .with_moment("history.ramp", first.moment())?;
                 loads.extend((1..=ramp_steps).map(|i| pressed.scaled(fraction(i, ramp_steps))));
                 loads.extend(
                     (1..=ramp_steps).map(|i| pressed.lerp(&first, fraction(i, ramp_steps))),
@@ -352,6 +363,23 @@ impl History {
         steps_per_cycle: usize,
         ramp_steps: usize,
     ) -> Result<Self> {
+        let no_moment = Harmonic::new("history.moment", 0.0, 0.0, 0.0)?;
+        Self::harmonic_with_moment(
+            [normal, shear, bulk, no_moment],
+            cycles,
+            steps_per_cycle,
+            ramp_steps,
+        )
+    }
+
+    /// [`History::harmonic`] with a harmonic moment too: `[normal, shear, bulk, moment]`.
+    pub fn harmonic_with_moment(
+        loads: [Harmonic; 4],
+        cycles: usize,
+        steps_per_cycle: usize,
+        ramp_steps: usize,
+    ) -> Result<Self> {
+        let [normal, shear, bulk, moment] = loads;
         count("history.cycles", cycles, 1)?;
         count("history.steps_per_cycle", steps_per_cycle, 2)?;
         count("history.ramp_steps", ramp_steps, 1)?;
@@ -369,7 +397,10 @@ impl History {
                 valid: "smaller in magnitude than history.normal.mean, so that P stays > 0",
             });
         }
-        let at = |t: f64| LoadPoint::new("history", normal.at(t), shear.at(t), bulk.at(t));
+        let at = |t: f64| {
+            LoadPoint::new("history", normal.at(t), shear.at(t), bulk.at(t))?
+                .with_moment("history", moment.at(t))
+        };
         let start = at(0.0)?;
         let mut loads: Vec<LoadPoint> = (1..=ramp_steps)
             .map(|i| start.scaled(i as f64 / ramp_steps as f64))

@@ -2,20 +2,24 @@
 //!
 //! Sign conventions (docs/theory.md, "Conventions"): `normal` P > 0 compresses the contact;
 //! `shear` Q and `bulk` sigma (tension in one body, parallel to the interface) are positive as in
-//! the paper's Figure 1. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
+//! the paper's Figure 1; `moment` M is the moment of the contact pressure about x = 0,
+//! `M = integral p(x) x dx` (docs/theory.md, "Moment"), so the pressure centroid sits at M/P. The cycle's ends are labelled by Q: point 1 is the end with the smaller Q,
 //! so `dQ = Q2 - Q1 >= 0`, and the paper's `dsigma = sigma1 - sigma2`.
 
 use crate::error::{lazily_named, physical, physical_positive, Result, MAGNITUDE_LIMIT};
 
-/// Normal force P (> 0), shear force Q (force per unit thickness) and bulk tension sigma (stress).
+/// Normal force P (> 0), shear force Q (force per unit thickness), bulk tension sigma (stress)
+/// and the moment M of the pressure about x = 0 (force times length per unit thickness; 0 unless
+/// set with [`LoadPoint::with_moment`]).
 ///
-/// Valid by construction: 1e-30 <= P <= 1e30 and |Q|, |sigma| <= 1e30
+/// Valid by construction: 1e-30 <= P <= 1e30 and |Q|, |sigma|, |M| <= 1e30
 /// ([`crate::error::MAGNITUDE_LIMIT`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadPoint {
     normal: f64,
     shear: f64,
     bulk: f64,
+    moment: f64,
 }
 
 impl LoadPoint {
@@ -29,7 +33,25 @@ impl LoadPoint {
             normal,
             shear,
             bulk,
+            moment: 0.0,
         })
+    }
+
+    /// The same point with the moment `moment` (M about x = 0, any sign; finite, |M| <= 1e30).
+    /// `name` prefixes the field name in errors, as in [`LoadPoint::new`].
+    ///
+    /// ```
+    /// use halfplane::LoadPoint;
+    ///
+    /// let point = LoadPoint::new("cycle.point1", 1000.0, 200.0, 0.0)?.with_moment("cycle.point1", 150.0)?;
+    /// assert_eq!(point.moment(), 150.0);
+    /// assert_eq!(point.centroid(), 0.15);
+    /// assert!(point.with_moment("cycle.point1", f64::NAN).is_err());
+    /// # Ok::<(), halfplane::Error>(())
+    /// ```
+    pub fn with_moment(self, name: &str, moment: f64) -> Result<Self> {
+        lazily_named(physical, moment, || format!("{name}.moment"))?;
+        Ok(Self { moment, ..self })
     }
 
     /// Normal force per unit thickness P (N/mm), > 0.
@@ -47,8 +69,18 @@ impl LoadPoint {
         self.bulk
     }
 
+    /// Moment M of the contact pressure about x = 0 (N mm/mm); 0 unless set.
+    pub fn moment(&self) -> f64 {
+        self.moment
+    }
+
+    /// The pressure centroid `M/P`, where the resultant normal force acts.
+    pub fn centroid(&self) -> f64 {
+        self.moment / self.normal
+    }
+
     /// The point a fraction `t` of the way from `self` to `other` (in-phase loading is a straight
-    /// segment in P-Q-sigma space). `t` is clamped to [0, 1], so the result is valid: P stays a
+    /// segment in P-Q-sigma-M space). `t` is clamped to [0, 1], so the result is valid: P stays a
     /// weighted mean of two positive values.
     pub fn lerp(&self, other: &LoadPoint, t: f64) -> LoadPoint {
         let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
@@ -58,6 +90,7 @@ impl LoadPoint {
             normal: mix(self.normal, other.normal),
             shear: mix(self.shear, other.shear),
             bulk: mix(self.bulk, other.bulk),
+            moment: mix(self.moment, other.moment),
         }
     }
 
@@ -74,6 +107,7 @@ impl LoadPoint {
             normal: (t * self.normal).max(1.0 / MAGNITUDE_LIMIT),
             shear: t * self.shear,
             bulk: t * self.bulk,
+            moment: t * self.moment,
         }
     }
 }

@@ -23,6 +23,7 @@
 
 use crate::error::{physical, physical_positive, Error, Result};
 use crate::labels::{Edge, PerEdge};
+use crate::load::LoadPoint;
 use crate::normal::Contact;
 use crate::profile::{ContactIntegrals, Shape};
 use std::f64::consts::PI;
@@ -37,9 +38,38 @@ pub struct NormalContact {
     rotation: f64,
     intensity: PerEdge<f64>,
     on_flat: PerEdge<bool>,
+    /// Solved by the symmetric contact law (symmetric profile, M = 0): `[-a, a]`, no rotation.
+    centred: bool,
 }
 
 impl NormalContact {
+    /// The centred contact `[-a, a]` of a symmetric profile under P alone, with edge intensity
+    /// `k_n` at both ends and no rotation.
+    pub(crate) fn centred(normal: f64, a: f64, k_n: f64) -> Self {
+        Self {
+            normal,
+            moment: 0.0,
+            ends: PerEdge { left: -a, right: a },
+            rotation: 0.0,
+            intensity: PerEdge {
+                left: k_n,
+                right: k_n,
+            },
+            on_flat: PerEdge {
+                left: false,
+                right: false,
+            },
+            centred: true,
+        }
+    }
+
+    /// The same contact with the end `edge` put at `x`, a rounding-size move: the march puts an
+    /// end on a cell centre exactly where its solve found it there to 1e-13.
+    pub(crate) fn with_end(mut self, edge: Edge, x: f64) -> Self {
+        self.ends[edge] = x;
+        self
+    }
+
     /// The normal load P.
     pub fn normal(&self) -> f64 {
         self.normal
@@ -89,6 +119,37 @@ impl NormalContact {
     /// K_N at both ends.
     pub fn normal_intensities(&self) -> PerEdge<f64> {
         self.intensity
+    }
+
+    /// The change of the pressure's edge coefficient at each end, in units of
+    /// `1/(pi sqrt(2a))`, when P changes by `d_normal` and M by `d_moment` from this contact:
+    /// `dP - 2(dM - c dP)/a` at the left end and `dP + 2(dM - c dP)/a` at the right. To first
+    /// order the pressure changes by `(dP + 2(dM - c dP)(x - c)/a^2)/(pi sqrt(a^2 - (x - c)^2))`,
+    /// the bounded-ends solution of the integral equation for a uniform change of the gap's slope
+    /// (the rotation) with the resultants dP and dM (docs/theory.md, "Moment"). For a centred
+    /// contact under P alone both are dP, the classical `dp = dP/(pi sqrt(a^2 - x^2))`.
+    pub fn edge_load_changes(&self, d_normal: f64, d_moment: f64) -> PerEdge<f64> {
+        let a = self.half_width();
+        let tilt = 2.0 * (d_moment - self.centre() * d_normal) / a;
+        PerEdge {
+            left: d_normal - tilt,
+            right: d_normal + tilt,
+        }
+    }
+
+    /// The change of the rotation theta when P changes by `d_normal` and M by `d_moment`, to
+    /// first order: `dtheta = -2 A (dM - c dP)/(pi a^2)` with `compliance` = A (the uniform slope
+    /// change whose bounded-ends pressure has the moment change `dM - c dP` about the centre,
+    /// docs/theory.md, "Moment"). Hertz: `d(-M/(P R))`.
+    pub fn rotation_change(&self, compliance: f64, d_normal: f64, d_moment: f64) -> f64 {
+        let a = self.half_width();
+        -2.0 * compliance * (d_moment - self.centre() * d_normal) / (PI * a * a)
+    }
+
+    /// Whether the contact was solved by the symmetric contact law (a symmetric profile under
+    /// no moment): `[-a, a]` exactly, with no rotation.
+    pub fn is_centred(&self) -> bool {
+        self.centred
     }
 
     /// For a flat punch with rounded edges: whether each end lies on the flat (`|b| <= b_flat`),
@@ -178,6 +239,76 @@ impl Contact {
         let a_comp = self.compliance().value();
         let (target_p, target_m) = (a_comp * normal, a_comp * moment);
         let (c, a, r) = self.solve_centre(normal, moment, target_p, target_m)?;
+        self.finish(normal, moment, c, a, &r)
+    }
+
+    /// The normal contact at `point` (P and M), by the cheapest exact route: on a symmetric
+    /// profile under no moment the centred contact `[-a, a]` of the symmetric contact law
+    /// ([`Contact::half_width`], [`Contact::normal_intensity`]), otherwise
+    /// [`Contact::normal_contact`]. The two agree to rounding where both apply (the tests check
+    /// 1e-14).
+    pub fn contact_at(&self, point: &LoadPoint) -> Result<NormalContact> {
+        self.contact_for(point.normal(), point.moment())
+    }
+
+    /// [`Contact::contact_at`] for P and M given apart.
+    pub(crate) fn contact_for(&self, normal: f64, moment: f64) -> Result<NormalContact> {
+        if moment == 0.0 && self.profile.is_symmetric() {
+            let a = self.half_width(normal)?;
+            return Ok(NormalContact::centred(normal, a, self.normal_intensity(a)?));
+        }
+        self.normal_contact(normal, moment)
+    }
+
+    /// [`Contact::contact_for`] started from `near`, the contact of a nearby load: Newton's
+    /// method on both resultants at once, `(A P, A M)` against `(c, a)` with the exact Jacobian
+    /// (module docs), which converges in two or three steps from a neighbour along a load path;
+    /// the bracketed solve of [`Contact::normal_contact`] from scratch when a step leaves the
+    /// profile or Newton has not settled in 8 steps. The same stopping rule (a step of 1e-15 of
+    /// `a + |c|`), so the answer agrees with the solve from scratch to rounding.
+    pub(crate) fn contact_near(
+        &self,
+        normal: f64,
+        moment: f64,
+        near: &NormalContact,
+    ) -> Result<NormalContact> {
+        if moment == 0.0 && self.profile.is_symmetric() {
+            return self.contact_for(normal, moment);
+        }
+        physical_positive("normal load", normal)?;
+        physical("moment", moment)?;
+        let a_comp = self.compliance().value();
+        let (target_p, target_m) = (a_comp * normal, a_comp * moment);
+        let (mut c, mut a) = (near.centre(), near.half_width());
+        for _ in 0..8 {
+            let Ok(r) = self.resultants(c, a) else { break };
+            let (f1, f2) = (r.load - target_p, r.moment - target_m);
+            let det = r.load_c * r.moment_a - r.load_a * r.moment_c;
+            let step_c = -(r.moment_a * f1 - r.load_a * f2) / det;
+            let step_a = -(-r.moment_c * f1 + r.load_c * f2) / det;
+            if !(step_c.is_finite() && step_a.is_finite()) || a + step_a <= 0.0 {
+                break;
+            }
+            if step_c.abs().max(step_a.abs()) <= 1e-15 * (a + c.abs()) {
+                return self.finish(normal, moment, c, a, &r);
+            }
+            c += step_c;
+            a += step_a;
+        }
+        self.normal_contact(normal, moment)
+    }
+
+    /// The solved contact `(c, a)` with its resultants `r`: K_N at both ends, checked to be
+    /// non-negative, the rotation and the ends' positions against the flat.
+    fn finish(
+        &self,
+        normal: f64,
+        moment: f64,
+        c: f64,
+        a: f64,
+        r: &Resultants,
+    ) -> Result<NormalContact> {
+        let a_comp = self.compliance().value();
         let scale = (2.0 / a).sqrt() / (PI * a_comp);
         let intensity = PerEdge {
             left: scale * (r.load_a - r.load_c),
@@ -214,7 +345,18 @@ impl Contact {
                 right: intensity.right.max(0.0),
             },
             on_flat,
+            centred: false,
         })
+    }
+
+    /// The contact pressure of `state` at `x`, by the route `state` was solved with: the
+    /// symmetric [`Contact::pressure`] for a centred contact, [`Contact::pressure_in`] otherwise.
+    pub fn pressure_at(&self, state: &NormalContact, x: f64) -> Result<f64> {
+        if state.centred {
+            self.pressure(state.half_width(), x)
+        } else {
+            self.pressure_in(state, x)
+        }
     }
 
     /// The contact pressure of `state` at `x` (zero outside `[b1, b2]`):

@@ -115,7 +115,7 @@ fn outside_analysis() -> Vec<Error> {
         Error::StickZoneOutsideContact {
             left: -2.0,
             right: 0.5,
-            smaller_half_width: 1.0,
+            common: [-1.0, 1.0],
         },
         Error::GrossSliding {
             point: GivenPoint::Second,

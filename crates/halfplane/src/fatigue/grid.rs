@@ -33,8 +33,9 @@ pub const MAX_GRID_POINTS: usize = 1_000_000;
 
 impl FatigueGrid {
     /// A grid of `nx` by `nz` points (each 2 or more, at most [`MAX_GRID_POINTS`] in all) over
-    /// `|x| <= width a_max`, `0 <= z <= depth a_max` (`width`, `depth` from 0.01 to 100), searching
-    /// the in-plane planes.
+    /// `|x - c| <= width a_max`, `0 <= z <= depth a_max` (`width`, `depth` from 0.01 to 100;
+    /// `[c - a_max, c + a_max]` the span of the cycle's contacts, `c = 0` without a moment on a
+    /// symmetric profile), searching the in-plane planes.
     pub fn new(nx: usize, nz: usize, width: f64, depth: f64) -> Result<Self> {
         for (field, n) in [("fatigue.nx", nx), ("fatigue.nz", nz)] {
             if !(2..=MAX_GRID_POINTS).contains(&n) {

@@ -126,7 +126,7 @@ pub fn analyse(
     grid: &FatigueGrid,
 ) -> Result<FatigueResult> {
     let cycle = stages::SteadyCycle::march(contact, history, options)?;
-    let points = stages::GridPoints::new(grid, cycle.a_max);
+    let points = stages::GridPoints::new(grid, cycle.a_max, cycle.centre);
     let planes: Vec<CriticalPlanes> = cycle
         .histories(&points.px, &points.pz)?
         .iter()

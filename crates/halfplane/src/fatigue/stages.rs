@@ -22,8 +22,12 @@ pub(super) struct SteadyCycle {
     q_max: Vec<f64>,
     /// The march's result (cells, per-cycle slip ranges).
     result: MarchResult,
-    /// The largest contact half-width of the history.
+    /// The largest contact half-width of the history: half the span of every contact it reaches
+    /// (the half-width at the largest P without a moment on a symmetric profile).
     pub a_max: f64,
+    /// The middle of that span (0 without a moment on a symmetric profile): the grid is centred
+    /// there.
+    pub centre: f64,
     /// The material.
     pub material: Material,
 }
@@ -41,13 +45,17 @@ impl SteadyCycle {
             .iter()
             .map(|p| p.normal())
             .fold(0.0, f64::max);
-        let a_max = contact.half_width(p_max)?;
+        let centred =
+            contact.profile().is_symmetric() && history.loads().iter().all(|p| p.moment() == 0.0);
         let mut states: Vec<(usize, f64, Traction)> = Vec::with_capacity(spc);
         let mut q_max: Vec<f64> = Vec::new();
         let mut failure = None;
+        let (mut lower, mut upper) = (f64::INFINITY, f64::NEG_INFINITY);
         let result = march(contact, history, options, |r, f| {
+            lower = lower.min(r.ends.left);
+            upper = upper.max(r.ends.right);
             if r.step > start && failure.is_none() {
-                match Traction::from_march(r.half_width, f) {
+                match Traction::from_march_ends(r.ends, f) {
                     Ok(t) => states.push((r.step, r.load.bulk(), t)),
                     Err(e) => failure = Some(e),
                 }
@@ -60,12 +68,18 @@ impl SteadyCycle {
         if let Some(e) = failure {
             return Err(e);
         }
+        let (a_max, centre) = if centred {
+            (contact.half_width(p_max)?, 0.0)
+        } else {
+            (0.5 * (upper - lower), 0.5 * (upper + lower))
+        };
         Ok(Self {
             steps: (start + 1..=start + spc).collect(),
             states,
             q_max,
             result,
             a_max,
+            centre,
             material: contact.material,
         })
     }
@@ -96,9 +110,9 @@ pub(super) struct GridPoints {
 }
 
 impl GridPoints {
-    pub fn new(grid: &FatigueGrid, a_max: f64) -> Self {
+    pub fn new(grid: &FatigueGrid, a_max: f64, centre: f64) -> Self {
         let grid_x: Vec<f64> = (0..grid.nx)
-            .map(|i| a_max * grid.width * (-1.0 + 2.0 * i as f64 / (grid.nx - 1) as f64))
+            .map(|i| centre + a_max * grid.width * (-1.0 + 2.0 * i as f64 / (grid.nx - 1) as f64))
             .collect();
         let grid_z: Vec<f64> = (0..grid.nz)
             .map(|j| a_max * grid.depth * j as f64 / (grid.nz - 1) as f64)
@@ -253,7 +267,7 @@ pub(super) fn ruiz(cycle: &SteadyCycle) -> Result<Surface> {
         .map(|c| c.slip_range.iter().map(|r| 0.5 * r).collect())
         .unwrap_or_else(|| vec![0.0; result.x.len()]);
     let inside: Vec<usize> = (0..result.x.len())
-        .filter(|&i| result.x[i].abs() < cycle.a_max)
+        .filter(|&i| (result.x[i] - cycle.centre).abs() < cycle.a_max)
         .collect();
     let x: Vec<f64> = inside.iter().map(|&i| result.x[i]).collect();
     let surface = cycle.histories(&x, &vec![0.0; x.len()])?;

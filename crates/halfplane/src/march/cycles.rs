@@ -12,8 +12,10 @@ use super::marcher::Marcher;
 use super::types::{CycleReport, Fields, MarchOptions, MarchResult, StepReport};
 use crate::error::{Error, Result};
 use crate::history::{CycleStructure, History, Steady, MAX_INCREMENTS};
+use crate::labels::Edge;
 use crate::load::LoadPoint;
 use crate::normal::Contact;
+use crate::normal_moment::NormalContact;
 use std::convert::Infallible;
 use std::ops::ControlFlow;
 
@@ -178,8 +180,12 @@ fn drive<B>(
         .iter()
         .map(|p| p.normal())
         .fold(0.0, f64::max);
-    let span = contact.half_width(p_max)?;
-    let mut marcher = Marcher::new(contact, span, options)?;
+    let mut marcher =
+        if contact.profile().is_symmetric() && history.loads().iter().all(|p| p.moment() == 0.0) {
+            Marcher::new(contact, contact.half_width(p_max)?, options)?
+        } else {
+            Marcher::spanning(contact, grid_span(contact, history)?, options)?
+        };
     let n = options.cells();
     let slip_scale = contact.compliance().value() * contact.friction.value() * p_max;
     let mut steps = Vec::with_capacity(history.loads().len());
@@ -238,6 +244,27 @@ fn drive<B>(
         shakedown_cycle,
         steady_change,
     }))
+}
+
+/// The grid of a march whose contacts are not centred (a moment, or an asymmetric profile): the
+/// span of every row's contact, widened by 1% of its length at each end, since an end may pass
+/// beyond both rows of an increment between them (the march refuses a load whose contact leaves
+/// the grid, naming it).
+fn grid_span(contact: &Contact, history: &History) -> Result<[f64; 2]> {
+    let mut near: Option<NormalContact> = None;
+    let (mut lower, mut upper) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (k, load) in history.loads().iter().enumerate() {
+        let found = match &near {
+            Some(n) => contact.contact_near(load.normal(), load.moment(), n),
+            None => contact.contact_at(load),
+        }
+        .map_err(|e| e.with_moment_field(&format!("history row {}.moment", k + 1)))?;
+        lower = lower.min(found.end(Edge::Left));
+        upper = upper.max(found.end(Edge::Right));
+        near = Some(found);
+    }
+    let margin = 0.01 * (upper - lower);
+    Ok([lower - margin, upper + margin])
 }
 
 /// The largest change of a cell's slip range between two cycles, as a fraction of `scale`

@@ -12,7 +12,7 @@
 //! - **Onsets.** A cell stuck at the start and slipping at the end starts to slip at an
 //!   interior time, where its stick traction reaches `f p`. The stick traction is taken linear
 //!   from its start value to the active-set trial that flagged the cell, the limit as
-//!   `f sqrt(u) psi` with `u = a^2 - x^2` and `psi` linear in t, and the crossing is found by
+//!   `f sqrt(u) psi` with `u = (x - b1)(b2 - x)` and `psi` linear in t, and the crossing is found by
 //!   bisection. A cell entering contact at the start of the sub-step is such a cell (stuck,
 //!   with zero traction and zero pressure). It dissipates only after its onset.
 //! - **Start-set rates.** A cell already slipping slides at the start-set rate (the first
@@ -46,16 +46,23 @@
 use super::marcher::{Cell, Marcher};
 use super::solve::{apply, Rhs};
 use crate::error::Result;
+use crate::labels::PerEdge;
 use std::f64::consts::PI;
 
 impl Marcher {
-    /// Energy dissipated in the sub-step just solved, from half-width `a0` to `a1`, before the
+    /// Energy dissipated in the sub-step just solved, from the contact ends `ends0` to `ends1`
+    /// (`[-a0, a0]` to `[-a1, a1]` without a moment), before the
     /// state is updated: `traction` still holds the start tractions, `dq` the increments,
     /// `sub_slip` the slips, `trial_slip` the first pass's slips and `flag_traction` the trial
     /// traction with which each onset cell was flagged. The rules are the module's (derived in
     /// `docs/convergence.md`, "Energy per cycle"); the result is never negative (the exact
     /// value is not, and clamping a rounding-size negative sum was never needed in the studies).
-    pub(super) fn dissipation(&mut self, a0: f64, a1: f64, step: usize) -> Result<f64> {
+    pub(super) fn dissipation(
+        &mut self,
+        ends0: PerEdge<f64>,
+        ends1: PerEdge<f64>,
+        step: usize,
+    ) -> Result<f64> {
         let n = self.x.len();
         let f = self.friction;
         // Onset times and their weighted mean.
@@ -65,7 +72,7 @@ impl Marcher {
             if self.sub_slip[i] == 0.0 || self.start_cells[i] != Cell::Stick {
                 continue;
             }
-            let e = self.edge_factors(i, a0, a1);
+            let e = self.edge_factors(i, ends0, ends1);
             let (q0, q_flag) = (self.traction[i], self.flag_traction[i]);
             let tau = onset_time(q0, q_flag, f, &e);
             self.onset[i] = tau;
@@ -95,7 +102,7 @@ impl Marcher {
                 Cell::Slip(sign) => sign,
                 _ => s.signum(),
             };
-            let e = self.edge_factors(i, a0, a1);
+            let e = self.edge_factors(i, ends0, ends1);
             let tau = self.onset[i];
             let p_mean = e.mean(tau);
             energy += f
@@ -182,9 +189,10 @@ impl Marcher {
             .sum())
     }
 
-    fn edge_factors(&self, i: usize, a0: f64, a1: f64) -> EdgeFactors {
-        let x2 = self.x[i] * self.x[i];
-        let (u0, u1) = ((a0 * a0 - x2).max(0.0), (a1 * a1 - x2).max(0.0));
+    fn edge_factors(&self, i: usize, ends0: PerEdge<f64>, ends1: PerEdge<f64>) -> EdgeFactors {
+        let x = self.x[i];
+        let u = |e: PerEdge<f64>| ((x - e.left) * (e.right - x)).max(0.0);
+        let (u0, u1) = (u(ends0), u(ends1));
         let (p0, p1) = (self.pressure_start[i], self.pressure[i]);
         let psi0 = if u0 > 0.0 {
             p0 / u0.sqrt()
@@ -198,8 +206,9 @@ impl Marcher {
     }
 }
 
-/// A cell's pressure over a sub-step in the form `p = sqrt(u) psi`, `u = a^2 - x^2`, `psi`
-/// smooth, with `u` and `psi` linear in the sub-step's parameter t.
+/// A cell's pressure over a sub-step in the form `p = sqrt(u) psi`, `u = (x - b1)(b2 - x)`
+/// (`a^2 - x^2` for a centred contact), `psi` smooth, with `u` and `psi` linear in the
+/// sub-step's parameter t.
 ///
 /// Every profile's pressure has this form (the normal problem's pressure formula, as in
 /// Johnson, *Contact Mechanics*, section 5.7: the factor `sqrt(a^2 - x^2)` multiplies a regular

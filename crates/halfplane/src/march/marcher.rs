@@ -13,8 +13,10 @@ use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, StepReport};
 use crate::error::{Error, Result};
+use crate::labels::{Edge, PerEdge};
 use crate::load::LoadPoint;
 use crate::normal::Contact;
+use crate::normal_moment::NormalContact;
 use std::f64::consts::PI;
 
 /// What a cell does in the current increment.
@@ -62,8 +64,8 @@ pub struct Marcher {
     pub(super) start_cells: Vec<Cell>,
     /// Pressure at the start of the current sub-step.
     pub(super) pressure_start: Vec<f64>,
-    /// Contact half-width reached (0 unloaded).
-    half_width: f64,
+    /// The contact reached; `None` unloaded.
+    state: Option<NormalContact>,
     pub(super) cells: Vec<Cell>,
     // Work buffers, reused by every increment.
     pub(super) known: Vec<f64>,
@@ -89,21 +91,36 @@ impl Marcher {
     /// A grid of `options.cells` cells spanning `[-half_span, half_span]`, which must cover every
     /// contact the history will reach. Starts unloaded.
     pub fn new(contact: &Contact, half_span: f64, options: &MarchOptions) -> Result<Self> {
-        let n = options.cells();
         crate::error::positive("grid half-span", half_span)?;
-        let width = 2.0 * half_span / n as f64;
-        // Exactly symmetric (mirrored, not recomputed), so that both edges cross their cell
-        // centres at the same load, where a sub-step puts the half-width at the centre exactly.
-        let mut x: Vec<f64> = (0..n)
-            .map(|i| -half_span + (i as f64 + 0.5) * width)
-            .collect();
-        for i in 0..n / 2 {
-            x[n - 1 - i] = -x[i];
+        Self::spanning(contact, [-half_span, half_span], options)
+    }
+
+    /// A grid of `options.cells` cells spanning `[lower, upper]` (`lower < upper`), which must
+    /// cover every contact the history will reach: under a moment, or on an asymmetric profile,
+    /// the contacts need not be centred on x = 0. A grid centred on 0 is mirrored exactly (see
+    /// [`Marcher::new`]). Starts unloaded.
+    pub fn spanning(contact: &Contact, span: [f64; 2], options: &MarchOptions) -> Result<Self> {
+        let n = options.cells();
+        let [lower, upper] = span;
+        crate::error::physical("grid lower end", lower)?;
+        crate::error::physical("grid upper end", upper)?;
+        crate::error::positive("grid length", upper - lower)?;
+        let width = (upper - lower) / n as f64;
+        let mut x: Vec<f64> = (0..n).map(|i| lower + (i as f64 + 0.5) * width).collect();
+        if lower == -upper {
+            // Exactly symmetric (mirrored, not recomputed), so that both edges of a centred
+            // contact cross their cell centres at the same load, where a sub-step puts the
+            // half-width at the centre exactly.
+            for i in 0..n / 2 {
+                x[n - 1 - i] = -x[i];
+            }
+            if n % 2 == 1 {
+                x[n / 2] = 0.0;
+            }
         }
-        if n % 2 == 1 {
-            x[n / 2] = 0.0;
-        }
-        let row = kernel::cell_row(n, width, 4.0 * half_span);
+        // The log kernel's scale must exceed the grid's length to stay positive definite
+        // (kernel.rs); twice the length, as 4L for the symmetric span [-L, L].
+        let row = kernel::cell_row(n, width, 2.0 * (upper - lower));
         let dense = (options.solver() == LinearSolver::Dense).then(|| kernel::dense_matrix(&row));
         let kernel = Toeplitz::new(row)?;
         let zeros = vec![0.0; n];
@@ -129,7 +146,7 @@ impl Marcher {
             flag_traction: zeros.clone(),
             start_cells: vec![Cell::Out; n],
             pressure_start: zeros.clone(),
-            half_width: 0.0,
+            state: None,
             cells: vec![Cell::Out; n],
             known: zeros.clone(),
             g_known: zeros.clone(),
@@ -178,7 +195,8 @@ impl Marcher {
     pub fn step(&mut self, load: LoadPoint) -> Result<StepReport> {
         let step = self.step + 1;
         let name = format!("history row {step}");
-        let load = LoadPoint::new(&name, load.normal(), load.shear(), load.bulk())?;
+        let load = LoadPoint::new(&name, load.normal(), load.shear(), load.bulk())?
+            .with_moment(&name, load.moment())?;
         let f = self.friction;
         if load.shear().abs() >= f * load.normal() {
             return Err(Error::SlidesAtStep {
@@ -187,9 +205,19 @@ impl Marcher {
                 limit: f * load.normal(),
             });
         }
-        let a = self.contact.half_width(load.normal())?;
-        let half_span = self.x[self.x.len() - 1] + 0.5 * self.width;
-        if a > half_span * (1.0 + 1e-12) {
+        let target = match &self.state {
+            Some(near) => self
+                .contact
+                .contact_near(load.normal(), load.moment(), near),
+            None => self.contact.contact_at(&load),
+        }
+        .map_err(|e| e.with_moment_field(&format!("{name}.moment")))?;
+        let (lower, upper) = (
+            self.x[0] - 0.5 * self.width,
+            self.x[self.x.len() - 1] + 0.5 * self.width,
+        );
+        let slack = 1e-12 * (upper - lower);
+        if target.end(Edge::Left) < lower - slack || target.end(Edge::Right) > upper + slack {
             return Err(Error::InvalidInput {
                 field: format!("{name}.normal"),
                 value: load.normal(),
@@ -201,49 +229,39 @@ impl Marcher {
         // dissipated 7.7e-7 N mm/mm per cycle (flat-rounded, 100 cells, 100 steps per half) and
         // the energy per cycle was 2e-3 off at 10 steps per half, against 1e-4 with them: the
         // unloading increment reverses the loading one only when both see the same contact set.
-        // Sub-steps: the load fractions at which a(P) passes a cell centre. The half-width at a
-        // crossing is the centre itself, exactly, so the test `|x| < a` below is exact there.
-        let n = self.x.len();
+        // Sub-steps: the load fractions at which a contact end passes a cell centre, with that
+        // end at the centre exactly, so the tests `b1 < x < b2` in `press` are exact there.
         let start = self.load;
-        let (lo, hi) = (self.half_width.min(a), self.half_width.max(a));
-        let mut crossings: Vec<(f64, f64)> = Vec::new();
-        for &r in &self.x[n / 2..] {
-            if r > lo && r < hi {
-                let from = start.map_or(0.0, |p| p.normal());
-                let t = (self.contact.load(r)? - from) / (load.normal() - from);
-                if t > 0.0 && t < 1.0 {
-                    crossings.push((t, r));
-                }
-            }
-        }
-        crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
         let start_bulk = start.map_or(0.0, |p| p.bulk());
-        if load.shear() == 0.0
+        let pressing = load.shear() == 0.0
             && load.bulk() == start_bulk
-            && self.traction.iter().all(|q| *q == 0.0)
-        {
-            // Pressing alone: every sub-step would only move the edge (zero traction sticks, see
+            && self.traction.iter().all(|q| *q == 0.0);
+        let mut crossings = if pressing {
+            // Pressing alone: every sub-step would only move the edges (zero traction sticks, see
             // `advance`), so the end state is reached in one, without the O(N) work per crossing.
-            crossings.clear();
-            self.half_width = a;
-        }
-        crossings.push((1.0, a));
+            Vec::new()
+        } else {
+            self.crossings(start, &load, &target)?
+        };
+        crossings.push((1.0, target));
         self.slip_increment.fill(0.0);
         self.slip_travel.fill(0.0);
         let (mut energy_increment, mut passes) = (0.0, 0);
-        for (t, a_t) in crossings {
-            let target = match start {
+        for (t, contact_t) in crossings {
+            let target_load = match start {
                 _ if t == 1.0 => load,
                 Some(from) => from.lerp(&load, t),
                 None => load.scaled(t),
             };
-            let (energy, used) = self.advance(target, a_t, step)?;
+            let (energy, used) = self.advance(target_load, contact_t, step)?;
             energy_increment += energy;
             passes += used;
         }
         self.energy += energy_increment;
         self.step = step;
         // Kinematic classification: contact cells that did not slip this increment.
+        let ends = target.ends();
+        let n = self.x.len();
         let tolerance = self.options.slip_tolerance() * self.compliance * f * load.normal();
         let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
         let mut open: Option<usize> = None;
@@ -252,8 +270,8 @@ impl Marcher {
             match (sticks, open) {
                 (true, None) => open = Some(i),
                 (false, Some(start)) => {
-                    let left = (self.x[start] - 0.5 * self.width).max(-a);
-                    let right = (self.x[i - 1] + 0.5 * self.width).min(a);
+                    let left = (self.x[start] - 0.5 * self.width).max(ends.left);
+                    let right = (self.x[i - 1] + 0.5 * self.width).min(ends.right);
                     stick_intervals.push([left, right]);
                     open = None;
                 }
@@ -263,7 +281,8 @@ impl Marcher {
         Ok(StepReport {
             step,
             load,
-            half_width: a,
+            half_width: target.half_width(),
+            ends,
             stick_intervals,
             energy_increment,
             energy: self.energy,
@@ -271,9 +290,134 @@ impl Marcher {
         })
     }
 
-    /// One sub-step: from the current state to `load`, whose contact half-width is `a` (cells
-    /// with `|x| < a` are in contact during the whole sub-step). Returns the energy dissipated
-    /// and the active-set passes used.
+    /// The sub-step ends inside an increment from `start` (`None`: unloaded) to `load`, whose
+    /// contact is `target`: every fraction t in (0, 1) where a contact end passes a cell centre,
+    /// with the contact there (that end exactly at the centre), in increasing t.
+    ///
+    /// A centred contact at both ends of the increment (symmetric profile, no moment) crosses
+    /// cell centres in pairs on the mirrored grid: the fraction comes from the contact law,
+    /// `t = (P(x_c) - P_start)/(P_end - P_start)`. Otherwise each end's crossings are found on
+    /// their own by [`Marcher::crossing`].
+    fn crossings(
+        &self,
+        start: Option<LoadPoint>,
+        load: &LoadPoint,
+        target: &NormalContact,
+    ) -> Result<Vec<(f64, NormalContact)>> {
+        let from_normal = start.map_or(0.0, |p| p.normal());
+        let centred = target.is_centred() && self.state.is_none_or(|s| s.is_centred());
+        let mut crossings: Vec<(f64, NormalContact)> = Vec::new();
+        if centred {
+            let n = self.x.len();
+            let a0 = self.state.map_or(0.0, |s| s.half_width());
+            let a = target.half_width();
+            let (lo, hi) = (a0.min(a), a0.max(a));
+            for &r in &self.x[n / 2..] {
+                if r > lo && r < hi {
+                    let normal = self.contact.load(r)?;
+                    let t = (normal - from_normal) / (load.normal() - from_normal);
+                    if t > 0.0 && t < 1.0 {
+                        let k_n = self.contact.normal_intensity(r)?;
+                        let at = NormalContact::centred(normal, r, k_n);
+                        crossings.push((t, at));
+                    }
+                }
+            }
+        } else {
+            // From unloaded, the ends start where the smallest load puts them (a point at M/P
+            // for Hertz, about the flat for a flat punch).
+            let begin = match (&self.state, start) {
+                (Some(s), _) => *s,
+                (None, _) => self.contact.contact_at(&load.scaled(1e-9))?,
+            };
+            for edge in Edge::BOTH {
+                let (from, to) = (begin.end(edge), target.end(edge));
+                let (lo, hi) = (from.min(to), from.max(to));
+                let first = self.x.partition_point(|&x| x <= lo);
+                for &r in self.x[first..].iter().take_while(|&&x| x < hi) {
+                    if let Some(found) = self.crossing(start, load, &begin, target, edge, r)? {
+                        crossings.push(found);
+                    }
+                }
+            }
+        }
+        crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
+        Ok(crossings)
+    }
+
+    /// The fraction t of the increment from `start` to `load` at which the contact end `edge`
+    /// reaches `centre`, with the contact there (that end set to `centre` exactly): Newton's
+    /// method on `b(t) - centre` with the end's exact speed ([`NormalContact::edge_load_changes`]:
+    /// an end moves out by `2 dP_edge/(pi sqrt(2a) K_N)` per unit of the load change), each
+    /// contact solved from the previous one, inside a bracket that bisection keeps. `None` when
+    /// the end does not reach the centre inside (0, 1) (it moved there and back within the
+    /// increment).
+    fn crossing(
+        &self,
+        start: Option<LoadPoint>,
+        load: &LoadPoint,
+        begin: &NormalContact,
+        target: &NormalContact,
+        edge: Edge,
+        centre: f64,
+    ) -> Result<Option<(f64, NormalContact)>> {
+        let at = |t: f64| match start {
+            Some(from) => from.lerp(load, t),
+            None => load.scaled(t),
+        };
+        let (from, to) = (begin.end(edge), target.end(edge));
+        let rising = to > from;
+        // residual(t) = b(t) - centre, negative at t = 0 when the end rises through the centre.
+        let (mut lo, mut hi) = (0.0, 1.0);
+        let mut t = ((centre - from) / (to - from)).clamp(0.0, 1.0);
+        let mut near = if t < 0.5 { *begin } else { *target };
+        let scale = 1e-13 * (self.width + begin.half_width().max(target.half_width()));
+        for _ in 0..60 {
+            let point = at(t);
+            near = self
+                .contact
+                .contact_near(point.normal(), point.moment(), &near)?;
+            let residual = near.end(edge) - centre;
+            if residual.abs() <= scale || hi - lo <= 1e-15 {
+                if t <= 0.0 || t >= 1.0 {
+                    return Ok(None);
+                }
+                return Ok(Some((t, near.with_end(edge, centre))));
+            }
+            if (residual < 0.0) == rising {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            // The end's rate along the increment: the load change over it is (load - start).
+            let (d_normal, d_moment) = match start {
+                Some(p) => (load.normal() - p.normal(), load.moment() - p.moment()),
+                None => (load.normal(), load.moment()),
+            };
+            let d_edge = near.edge_load_changes(d_normal, d_moment)[edge];
+            let outward = 2.0 * d_edge
+                / (PI * (2.0 * near.half_width()).sqrt() * near.normal_intensity(edge));
+            let rate = match edge {
+                Edge::Left => -outward,
+                Edge::Right => outward,
+            };
+            let newton = t - residual / rate;
+            t = if newton > lo && newton < hi && newton.is_finite() {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+        }
+        Err(Error::NoConvergence {
+            what: "load fraction where a contact end crosses a cell centre",
+            iterations: 60,
+            last_step: hi - lo,
+        })
+    }
+
+    /// One sub-step: from the current state to `load`, whose contact is `target` (cells inside
+    /// both it and the current contact are in contact during the whole sub-step). Returns the
+    /// energy dissipated and the active-set passes used.
     ///
     /// The dissipation is the Coulomb work `f p |ds|` (Johnson, *Contact Mechanics*, section
     /// 7.2, for the frictional work `q ds` with `|q| = f p` while slipping), integrated over the
@@ -281,18 +425,23 @@ impl Marcher {
     /// of the slipping tractions taken into account. It is never negative. The end-of-step
     /// traction alone (`f p_end |s|`) is the rectangle rule, first order in the time step; the
     /// mean pressure times the slip is first order too, near moving edges.
-    fn advance(&mut self, load: LoadPoint, a: f64, step: usize) -> Result<(f64, usize)> {
+    fn advance(
+        &mut self,
+        load: LoadPoint,
+        target: NormalContact,
+        step: usize,
+    ) -> Result<(f64, usize)> {
         let n = self.x.len();
         let f = self.friction;
-        self.press(a)?;
-        let a0 = self.half_width;
+        self.press(&target)?;
+        let ends_start = self.ends();
         let d_sigma = load.bulk() - self.load.map_or(0.0, |p| p.bulk());
         if load.shear() == 0.0 && d_sigma == 0.0 && self.traction.iter().all(|q| *q == 0.0) {
             // Pressing alone (the first leg of a normal-first ramp): zero traction sticks and
             // carries no shear, which is the solution; nothing slips.
             self.sub_slip.fill(0.0);
             self.load = Some(load);
-            self.half_width = a;
+            self.state = Some(target);
             return Ok((0.0, 0));
         }
         let c_disp = self.compliance / PI;
@@ -391,20 +540,30 @@ impl Marcher {
                 break;
             }
         }
-        let energy = self.dissipation(a0, a, step)?;
-        self.commit(load, a);
+        let energy = self.dissipation(ends_start, target.ends(), step)?;
+        self.commit(load, target);
         Ok((energy, passes))
     }
 
-    /// The pressure at the new contact half-width `a` and the cells in contact: a cell stays in
+    /// The contact ends reached, `[0, 0]` unloaded.
+    fn ends(&self) -> PerEdge<f64> {
+        self.state.map_or(PerEdge::default(), |s| s.ends())
+    }
+
+    /// The pressure of the new contact `target` and the cells in contact: a cell stays in
     /// contact until the receding edge reaches its centre (its pressure, and so its traction, is
     /// zero then) and joins, sticking, when the advancing edge does. Keeps the sub-step's start.
-    fn press(&mut self, a: f64) -> Result<()> {
+    fn press(&mut self, target: &NormalContact) -> Result<()> {
         self.pressure_start.copy_from_slice(&self.pressure);
+        let (now, then) = (
+            target.ends(),
+            self.state.map_or(target.ends(), |s| s.ends()),
+        );
+        let (lower, upper) = (now.left.min(then.left), now.right.max(then.right));
         for i in 0..self.x.len() {
-            let inside = self.x[i].abs() < a.max(self.half_width);
+            let inside = self.x[i] > lower && self.x[i] < upper;
             self.pressure[i] = if inside {
-                self.contact.pressure(a, self.x[i])?
+                self.contact.pressure_at(target, self.x[i])?
             } else {
                 0.0
             };
@@ -418,9 +577,9 @@ impl Marcher {
         Ok(())
     }
 
-    /// Ends the sub-step at `load` (contact half-width `a`): the traction increments and the
-    /// settled slips added, the traction of cells out of contact zero.
-    fn commit(&mut self, load: LoadPoint, a: f64) {
+    /// Ends the sub-step at `load` (contact `target`): the traction increments and the settled
+    /// slips added, the traction of cells out of contact zero.
+    fn commit(&mut self, load: LoadPoint, target: NormalContact) {
         for i in 0..self.x.len() {
             self.traction[i] += self.dq[i];
             if self.cells[i] == Cell::Out {
@@ -432,6 +591,6 @@ impl Marcher {
             self.slip_travel[i] += s.abs();
         }
         self.load = Some(load);
-        self.half_width = a;
+        self.state = Some(target);
     }
 }

@@ -6,6 +6,7 @@
 //! computes a solution: nothing here marches, solves or touches the kernel.
 
 use crate::error::{Error, Result};
+use crate::labels::PerEdge;
 use crate::load::LoadPoint;
 
 /// How the stick cells' linear system is solved.
@@ -188,8 +189,10 @@ pub struct StepReport {
     pub step: usize,
     /// The load reached.
     pub load: LoadPoint,
-    /// Contact half-width.
+    /// Contact half-width `(b2 - b1)/2`.
     pub half_width: f64,
+    /// The contact ends `[b1, b2]` reached (`[-a, a]` without a moment on a symmetric profile).
+    pub ends: PerEdge<f64>,
     /// Every stick interval `[left, right]` (kinematic: no slip in this increment), left to right.
     pub stick_intervals: Vec<[f64; 2]>,
     /// Frictional energy dissipated in this increment (per unit thickness).

@@ -157,7 +157,7 @@ pub(super) fn exact_cycle(proto: &Side, test: &Contact) -> Result<Cycle> {
             cause: Some(Box::new(Error::StickZoneOutsideContact {
                 left: zone.left,
                 right: zone.right,
-                smaller_half_width: smaller,
+                common: [-smaller, smaller],
             })),
         });
     }

@@ -1,22 +1,28 @@
 //! Steady-state analysis of an in-phase cycle (the paper's main result): regime, permanent stick
-//! zone `[-m, n]` and slip-zone extents.
+//! zone `[-m, n]` and slip-zone extents, for any profile under P, Q, sigma and a moment M.
 //!
 //! Conventions: point 1 is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`,
 //! `dsigma = sigma1 - sigma2`, `d = (m + n)/2` (half-width), `e = (n - m)/2` (eccentricity,
-//! positive to the right, x increasing in the direction of positive Q). Which cycles the analysis
-//! applies to, and why, is derived in `docs/validity.md`.
+//! positive to the right, x increasing in the direction of positive Q). Under a moment each
+//! point's contact `[b1, b2]` is off centre and the pad rotates by theta (docs/theory.md,
+//! "Moment"); the tangential problem then sees the slope `g' + theta`, so the stick-zone
+//! equations gain the mean rotation of the segment's two ends. Which cycles the analysis applies
+//! to, and why, is derived in `docs/validity.md`.
 
 use crate::closed_form;
 use crate::error::{Error, Result};
 pub use crate::labels::GivenPoint;
-use crate::labels::{display_as_str, PerEdge, PerPoint};
+use crate::labels::{display_as_str, Edge, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
+use crate::normal_moment::NormalContact;
 use crate::profile::Shape;
 use std::f64::consts::PI;
+mod path;
 #[cfg(test)]
 mod tests;
 mod validity;
+pub(crate) use path::SegmentPath;
 
 /// How the stick zone is found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -188,6 +194,9 @@ pub struct Criteria {
     /// `|Q|/P` at the first and second points as given (gross sliding when >= f).
     pub shear_ratio: PerPoint<f64>,
     /// `(|dQ| + pi a_max |dsigma|/4)/|dP|` (eq. 1; full stick when <= f). Infinite when dP = 0.
+    /// Under a moment, the largest over both edges and along the segment of `|dS|/|dP_edge|`,
+    /// with `dP_edge` the change of the pressure's edge coefficient at that edge
+    /// ([`NormalContact::edge_load_changes`]); without one this is eq. (1).
     pub full_stick_ratio: f64,
     /// `pi a_max |dsigma|/4`, the bulk-tension term of eq. (1); partial slip is analysed only when
     /// `dQ - bulk_term > f |dP|` (see [`analyse`]).
@@ -197,7 +206,8 @@ pub struct Criteria {
 }
 
 /// Slip-zone extents (lengths from the contact edge to the stick zone) at both ends of the cycle:
-/// per edge, then per point as given (`a_i - m` at the left edge, `a_i - n` at the right).
+/// per edge, then per point as given (`a_i - m` at the left edge, `a_i - n` at the right; under
+/// a moment `-m - b1_i` and `b2_i - n` with `[b1_i, b2_i]` the contact at point i).
 pub type SlipZones = PerEdge<PerPoint<f64>>;
 
 /// Result of [`analyse`].
@@ -208,6 +218,9 @@ pub struct SteadyState {
     pub cycle: Cycle,
     /// Contact half-widths at the first and second points as given.
     pub half_width: PerPoint<f64>,
+    /// The normal contacts at the first and second points as given: ends, rotation and K_N at
+    /// each edge (centred, `[-a, a]`, on a symmetric profile under no moment).
+    pub contacts: PerPoint<NormalContact>,
     /// The regime.
     pub regime: Regime,
     /// What decided it.
@@ -230,17 +243,34 @@ pub(crate) struct Segment {
     pub(crate) shear_range: f64,
     /// `dsigma = sigma1 - sigma2`.
     pub(crate) bulk_range: f64,
+    /// The mean rotation `(theta1 + theta2)/2` of the two ends' contacts (0 without a moment on
+    /// a symmetric profile).
+    pub(crate) rotation: f64,
 }
 
 impl Segment {
-    /// The segment between `low` (smaller Q) and `high`.
-    pub(crate) fn between(low: &LoadPoint, high: &LoadPoint) -> Self {
+    /// The segment between `low` (smaller Q) and `high`, whose contacts' mean rotation is
+    /// `rotation`.
+    pub(crate) fn between(low: &LoadPoint, high: &LoadPoint, rotation: f64) -> Self {
         Self {
             normal_sum: low.normal() + high.normal(),
             shear_range: high.shear() - low.shear(),
             bulk_range: low.bulk() - high.bulk(),
+            rotation,
         }
     }
+}
+
+/// The normal contact at `point`, with a moment outside a table reported under `name.moment`
+/// (for example `cycle.point1.moment`).
+pub(crate) fn contact_named(
+    contact: &Contact,
+    point: &LoadPoint,
+    name: &str,
+) -> Result<NormalContact> {
+    contact
+        .contact_at(point)
+        .map_err(|e| e.with_moment_field(&format!("{name}.moment")))
 }
 
 /// Analyses the steady state of the in-phase cycle: regime, stick zone and slip zones.
@@ -274,30 +304,25 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     let (first, second) = cycle.as_given();
     let given = PerPoint { first, second };
     let shear_ratio = given.map(|p| p.shear().abs() / p.normal());
-    let half_width = PerPoint {
-        first: contact.half_width(first.normal())?,
-        second: contact.half_width(second.normal())?,
+    let contacts = PerPoint {
+        first: contact_named(contact, &first, "cycle.point1")?,
+        second: contact_named(contact, &second, "cycle.point2")?,
     };
+    let half_width = contacts.map(|c| c.half_width());
     let a_max = half_width.first.max(half_width.second);
-    let a_min = half_width.first.min(half_width.second);
-    let d_p = cycle.normal_range().abs();
     let d_q = cycle.shear_range();
     let bulk_term = PI * a_max * cycle.bulk_range().abs() / 4.0;
-    let criteria = Criteria {
-        shear_ratio,
-        full_stick_ratio: if d_p > 0.0 {
-            (d_q + bulk_term) / d_p
-        } else {
-            f64::INFINITY
-        },
-        bulk_term,
-        friction: f,
-    };
     let mut state = SteadyState {
         cycle: *cycle,
         half_width,
+        contacts,
         regime: Regime::PartialSlip,
-        criteria,
+        criteria: Criteria {
+            shear_ratio,
+            full_stick_ratio: f64::INFINITY,
+            bulk_term,
+            friction: f,
+        },
         stick_zone: None,
         slip_zones: None,
         iterations: 0,
@@ -306,31 +331,47 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
         state.regime = Regime::GrossSliding { point };
         return Ok(state);
     }
-    // Eq. (1) with a = a_max, written without dividing by dP; a constant load sticks.
-    if d_q + bulk_term <= f * d_p || (d_q == 0.0 && bulk_term == 0.0) {
+    let (low, high) = if cycle.swapped() {
+        (contacts.second, contacts.first)
+    } else {
+        (contacts.first, contacts.second)
+    };
+    let path = SegmentPath::new(contact, cycle, low, high)?;
+    let common = PerEdge {
+        left: low.end(Edge::Left).max(high.end(Edge::Left)),
+        right: low.end(Edge::Right).min(high.end(Edge::Right)),
+    };
+    // Eq. (1) with a = a_max, written without dividing by dP, generalised edge by edge along
+    // the segment (`SegmentPath::sticks`); a constant load sticks.
+    let (sticks, ratio) = path.sticks(f);
+    state.criteria.full_stick_ratio = ratio;
+    if sticks || (d_q == 0.0 && bulk_term == 0.0) {
         state.regime = Regime::FullStick;
         state.stick_zone = Some(StickZone {
-            left: -a_min,
-            right: a_min,
+            left: common.left,
+            right: common.right,
         });
         state.slip_zones = Some(SlipZones::default());
         return Ok(state);
     }
-    let segment = Segment::between(&cycle.low(), &cycle.high());
+    let segment = Segment::between(
+        &cycle.low(),
+        &cycle.high(),
+        0.5 * (low.rotation() + high.rotation()),
+    );
     let (zone, iterations) = stick_zone(contact, &segment, None, options)?;
-    if !(-a_min < zone.left && zone.left < zone.right && zone.right < a_min) {
+    if !(common.left < zone.left && zone.left < zone.right && zone.right < common.right) {
         return Err(Error::StickZoneOutsideContact {
             left: zone.left,
             right: zone.right,
-            smaller_half_width: a_min,
+            common: [common.left, common.right],
         });
     }
-    let (m, n) = (-zone.left, zone.right);
-    validity::check_slip_grows_with(contact, cycle, half_width, options)?;
+    validity::check_slip_grows_with(contact, cycle, contacts, &path, options)?;
     state.stick_zone = Some(zone);
     state.slip_zones = Some(PerEdge {
-        left: half_width.map(|a| a - m),
-        right: half_width.map(|a| a - n),
+        left: contacts.map(|c| zone.left - c.end(Edge::Left)),
+        right: contacts.map(|c| c.end(Edge::Right) - zone.right),
     });
     state.iterations = iterations;
     Ok(state)
@@ -346,15 +387,20 @@ fn no_stick_zone(contact: &Contact, segment: &Segment) -> Error {
 }
 
 /// Solves the two stick-zone equations for a load segment (docs/theory.md, "Permanent stick zone";
-/// paper eqs. (16) and (23), with `xi = e + d cos(theta)`):
+/// paper eqs. (16) and (23), with `xi = e + d cos(theta)`), with the slope `g' + theta_m` where
+/// `theta_m` is the segment's mean rotation (docs/theory.md, "Moment"; 0 without a moment on a
+/// symmetric profile, which gives the paper's equations):
 ///
-/// - `integral_0^pi g'(e + d cos t) dt = -pi A dsigma/(8 f)`
-/// - `f(P1 + P2) - dQ - pi e dsigma/4 = (2f/A) integral_0^pi xi g'(xi) dt`
+/// - `integral_0^pi g'(e + d cos t) dt + pi theta_m = -pi A dsigma/(8 f)`
+/// - `f(P1 + P2) - dQ - pi e dsigma/4 = (2f/A) integral_0^pi xi (g'(xi) + theta_m) dt`
 ///
-/// Hertz (with [`Method::Auto`]) uses the closed form ([`closed_form::hertz_stick_zone`]).
-/// Otherwise Newton's method with the exact Jacobian and a backtracking line search, started
-/// from the symmetric solution `d = a(P_K)`, `P_K = (P1 + P2)/2 - dQ/(2f)`, `e = 0` (exact when
-/// dsigma = 0), or from `guess` = (d, e). Returns the zone and the iterations used.
+/// Hertz (with [`Method::Auto`]) uses the closed form ([`closed_form::hertz_stick_zone`]; the
+/// rotation moves the zone by `-R theta_m`). Otherwise Newton's method with the exact Jacobian
+/// and a backtracking line search, started from `guess` = (d, e), or else from the symmetric
+/// solution `d = a(P_K)`, `P_K = (P1 + P2)/2 - dQ/(2f)`, `e = 0` (exact when dsigma = 0 and
+/// there is no rotation), or, under a rotation or on an asymmetric profile, from the contact
+/// carrying `P_K` with about the zone's tilt ([`zone_guess`]). Returns the zone and the
+/// iterations used.
 pub(crate) fn stick_zone(
     contact: &Contact,
     segment: &Segment,
@@ -367,24 +413,27 @@ pub(crate) fn stick_zone(
         normal_sum,
         shear_range,
         bulk_range,
+        rotation,
     } = *segment;
     if let (Method::Auto, Shape::Hertz { radius }) = (options.method(), contact.profile.shape()) {
         let (d, e) =
             closed_form::hertz_stick_zone(a_comp, *radius, f, normal_sum, shear_range, bulk_range)
                 .ok_or_else(|| no_stick_zone(contact, segment))?;
-        return Ok((StickZone::from_half_width(d, e), 0));
+        return Ok((StickZone::from_half_width(d, e - radius * rotation), 0));
     }
     let residual = |d: f64, e: f64| -> Result<([f64; 2], [[f64; 2]; 2])> {
         let s = contact.profile.stick_integrals(d, e)?;
         let r = [
-            s.j0 + PI * a_comp * bulk_range / (8.0 * f),
-            2.0 * f / a_comp * s.j1 + PI * e * bulk_range / 4.0 - f * normal_sum + shear_range,
+            s.j0 + PI * rotation + PI * a_comp * bulk_range / (8.0 * f),
+            2.0 * f / a_comp * (s.j1 + PI * e * rotation) + PI * e * bulk_range / 4.0
+                - f * normal_sum
+                + shear_range,
         ];
         let jac = [
             [s.j0_d, s.j0_e],
             [
                 2.0 * f / a_comp * s.j1_d,
-                2.0 * f / a_comp * s.j1_e + PI * bulk_range / 4.0,
+                2.0 * f / a_comp * (s.j1_e + PI * rotation) + PI * bulk_range / 4.0,
             ],
         ];
         Ok((r, jac))
@@ -396,12 +445,22 @@ pub(crate) fn stick_zone(
             if p_k <= 0.0 {
                 return Err(no_stick_zone(contact, segment));
             }
-            (contact.half_width(p_k)?, 0.0)
+            if rotation == 0.0 && contact.profile.is_symmetric() {
+                (contact.half_width(p_k)?, 0.0)
+            } else {
+                zone_guess(contact, p_k, rotation + a_comp * bulk_range / (8.0 * f))?
+            }
         }
     };
     // Residual scales: the consistency equation is a slope integral (compare with pi g'(d)),
     // equilibrium a force (compare with f (P1 + P2)).
-    let s1 = PI * contact.profile.slope(d)?.abs().max(f64::MIN_POSITIVE);
+    let s1 = PI
+        * contact
+            .profile
+            .slope(e + d)?
+            .abs()
+            .max(contact.profile.slope(e - d)?.abs())
+            .max(f64::MIN_POSITIVE);
     let s2 = f * normal_sum;
     let norm = |r: [f64; 2]| ((r[0] / s1).powi(2) + (r[1] / s2).powi(2)).sqrt();
     let (mut r, mut jac) = residual(d, e)?;
@@ -459,4 +518,24 @@ pub(crate) fn stick_zone(
         iterations: options.max_iterations(),
         last_step,
     })
+}
+
+/// A starting point `(d, e)` for the stick-zone Newton iteration under a rotation or on an
+/// asymmetric profile. The zone solves the normal problem of the profile under the load `p_k`
+/// with the prescribed rotation `tilt = theta_m + A dsigma/(8f)` (the first equation is the
+/// consistency condition of that contact, the second its load, docs/theory.md, "Moment"); the
+/// contact under `p_k` alone, moved by the moment that changes its rotation by the missing
+/// tilt to first order (`dtheta = -2 A dM/(pi a^2)`, [`NormalContact::rotation_change`]), is
+/// close to it.
+fn zone_guess(contact: &Contact, p_k: f64, tilt: f64) -> Result<(f64, f64)> {
+    let a_comp = contact.compliance().value();
+    let plain = contact.contact_for(p_k, 0.0)?;
+    let per_moment = plain.rotation_change(a_comp, 0.0, 1.0);
+    let moment = (tilt - plain.rotation()) / per_moment;
+    let moved = if moment.is_finite() {
+        contact.contact_for(p_k, moment).unwrap_or(plain)
+    } else {
+        plain
+    };
+    Ok((moved.half_width(), moved.centre()))
 }

@@ -35,6 +35,7 @@ fn a_segment_that_would_slide_has_no_stick_zone() {
         normal_sum: 2000.0,
         shear_range: 1300.0,
         bulk_range: 0.0,
+        rotation: 0.0,
     };
     for method in [Method::Auto, Method::Implicit] {
         let options = SteadyOptions::default().with_method(method);
@@ -85,6 +86,7 @@ fn start_of_half_speeds_hold_for_any_profile() {
             normal_sum: 2.0 * 1400.0 - t * 400.0,
             shear_range: t * 500.0,
             bulk_range: t * (-400.0),
+            rotation: 0.0,
         };
         let a2 = c.half_width(1400.0).unwrap();
         let (zone, _) = stick_zone(&c, &segment, None, &SteadyOptions::default()).unwrap();

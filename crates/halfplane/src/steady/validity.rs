@@ -9,24 +9,26 @@
 //! `dsigma = sigma1 - sigma2`, x positive in the direction of positive Q (the right stick
 //! boundary is `n`, the left `-m`); half 1 runs from the first point as given to the second.
 
+use super::path::{edge_speeds, SegmentPath};
 use super::{stick_zone, Segment, SteadyOptions, StickZone};
 use crate::error::{Error, Result};
 use crate::labels::{Edge, Half, PerEdge, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
-use crate::profile::Shape;
+use crate::normal_moment::NormalContact;
 use std::f64::consts::PI;
 
 /// Samples per half-cycle for the along-the-half check of [`check_slip_grows`] on a profile that
-/// is not convex.
+/// is not convex, or under a moment whose rotation bounds do not settle it.
 const SAMPLES_PER_HALF: usize = 32;
 
-/// The partial path of one half-cycle at fraction t: the stick zone, the bound `min(a_s, a(t))`
-/// the stick boundaries must stay below, and the outward speeds (`dm/dt` left, `dn/dt` right) of
-/// the stick boundaries.
+/// The partial path of one half-cycle at fraction t: the stick zone, the bounds
+/// `[max(b1_s, b1(t)), min(b2_s, b2(t))]` the stick boundaries must stay inside (the start's
+/// and the current contact's common part), and the outward speeds (`dm/dt` left, `dn/dt` right)
+/// of the stick boundaries.
 struct PathPoint {
     zone: StickZone,
-    limit: f64,
+    limit: PerEdge<f64>,
     boundary_rate: PerEdge<f64>,
 }
 
@@ -47,40 +49,54 @@ impl PathPoint {
 /// `dsigma = sigma1 - sigma2` (point 1 the end of smaller Q).
 ///
 /// At fraction t the partial path from `start` is, labelled by Q as the stick-zone equations need
-/// it, the segment with `P1 + P2 = 2 P_start + t (P_end - P_start)`, shear range `t dQ` and
-/// tension range `t dsigma`, on either half (on the rising half the current point replaces point 2,
-/// on the falling half point 1; both give these ranges).
+/// it, the segment with `P1 + P2 = 2 P_start + t (P_end - P_start)`, shear range `t dQ`, tension
+/// range `t dsigma` and mean rotation `(theta_start + theta(t))/2`, on either half (on the rising
+/// half the current point replaces point 2, on the falling half point 1; both give these).
 struct HalfPath<'a> {
     contact: &'a Contact,
     start: LoadPoint,
-    start_half_width: f64,
-    normal_change: f64,
+    end: LoadPoint,
+    start_contact: NormalContact,
     shear_range: f64,
     bulk_range: f64,
     options: &'a SteadyOptions,
 }
 
 impl HalfPath<'_> {
-    fn segment(&self, t: f64) -> Segment {
-        Segment {
-            normal_sum: 2.0 * self.start.normal() + t * self.normal_change,
-            shear_range: t * self.shear_range,
-            bulk_range: t * self.bulk_range,
-        }
+    fn normal_change(&self) -> f64 {
+        self.end.normal() - self.start.normal()
+    }
+
+    fn moment_change(&self) -> f64 {
+        self.end.moment() - self.start.moment()
     }
 
     /// The stick zone at fraction t > 0 and the boundary speeds from the implicit function
-    /// theorem: with `R(d, e; t) = 0` the two stick-zone equations of [`super::stick_zone`] and `J` their
-    /// exact Jacobian in (d, e), `(d', e') = -J^-1 dR/dt`, where
-    /// `dR1/dt = pi A dsigma/(8f)` and `dR2/dt = pi e dsigma/4 - f (P_end - P_start) + dQ`;
-    /// then `n' = d' + e'`, `m' = d' - e'` (docs/validity.md, "Along the half").
+    /// theorem: with `R(d, e; t) = 0` the two stick-zone equations of [`super::stick_zone`] and `J`
+    /// their exact Jacobian in (d, e), `(d', e') = -J^-1 dR/dt`, where
+    /// `dR1/dt = pi theta'/2 + pi A dsigma/(8f)` and
+    /// `dR2/dt = (2f/A) pi e theta'/2 + pi e dsigma/4 - f (P_end - P_start) + dQ`, theta' the
+    /// rate of the current contact's rotation (0 without a moment on a symmetric profile); then
+    /// `n' = d' + e'`, `m' = d' - e'` (docs/validity.md, "Along the half").
     ///
-    /// `a(t)` is needed only on a receding half (on an advancing one `a(t) >= a_s`): it is found
-    /// by Newton on the contact law from `near`, a half-width close by, or from scratch.
-    fn at(&self, t: f64, guess: Option<(f64, f64)>, near: &mut f64) -> Result<PathPoint> {
+    /// `near` holds a contact close to the one at t and is replaced by it.
+    fn at(&self, t: f64, guess: Option<(f64, f64)>, near: &mut NormalContact) -> Result<PathPoint> {
         let f = self.contact.friction.value();
         let a_comp = self.contact.compliance().value();
-        let (zone, _) = stick_zone(self.contact, &self.segment(t), guess, self.options)?;
+        let load = self.start.lerp(&self.end, t);
+        *near = self
+            .contact
+            .contact_near(load.normal(), load.moment(), near)?;
+        let rotation_rate =
+            near.rotation_change(a_comp, self.normal_change(), self.moment_change());
+        let rotation = 0.5 * (self.start_contact.rotation() + near.rotation());
+        let segment = Segment {
+            normal_sum: 2.0 * self.start.normal() + t * self.normal_change(),
+            shear_range: t * self.shear_range,
+            bulk_range: t * self.bulk_range,
+            rotation,
+        };
+        let (zone, _) = stick_zone(self.contact, &segment, guess, self.options)?;
         let (d, e) = (zone.half_width(), zone.eccentricity());
         let s = self.contact.profile.stick_integrals(d, e)?;
         let bulk = t * self.bulk_range;
@@ -88,25 +104,27 @@ impl HalfPath<'_> {
             [s.j0_d, s.j0_e],
             [
                 2.0 * f / a_comp * s.j1_d,
-                2.0 * f / a_comp * s.j1_e + PI * bulk / 4.0,
+                2.0 * f / a_comp * (s.j1_e + PI * rotation) + PI * bulk / 4.0,
             ],
         ];
         let r_t = [
-            PI * a_comp * self.bulk_range / (8.0 * f),
-            PI * e * self.bulk_range / 4.0 - f * self.normal_change + self.shear_range,
+            0.5 * PI * rotation_rate + PI * a_comp * self.bulk_range / (8.0 * f),
+            f / a_comp * PI * e * rotation_rate + PI * e * self.bulk_range / 4.0
+                - f * self.normal_change()
+                + self.shear_range,
         ];
         let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
         let d_t = -(jac[1][1] * r_t[0] - jac[0][1] * r_t[1]) / det;
         let e_t = -(-jac[1][0] * r_t[0] + jac[0][0] * r_t[1]) / det;
-        let limit = if self.normal_change < 0.0 {
-            *near = half_width_near(self.contact, self.normal(t), *near)?;
-            near.min(self.start_half_width)
-        } else {
-            self.start_half_width
-        };
         Ok(PathPoint {
             zone,
-            limit,
+            limit: PerEdge {
+                left: self.start_contact.end(Edge::Left).max(near.end(Edge::Left)),
+                right: self
+                    .start_contact
+                    .end(Edge::Right)
+                    .min(near.end(Edge::Right)),
+            },
             boundary_rate: PerEdge {
                 left: d_t - e_t,
                 right: d_t + e_t,
@@ -114,46 +132,10 @@ impl HalfPath<'_> {
         })
     }
 
-    /// P at fraction t.
-    fn normal(&self, t: f64) -> f64 {
-        self.start.normal() + t * self.normal_change
+    /// The outward speed of the contact edge `edge` at `near`, the contact at some fraction.
+    fn edge_rate(&self, near: &NormalContact, edge: Edge) -> f64 {
+        edge_speeds(near, self.normal_change(), self.moment_change())[edge]
     }
-
-    /// The contact edge's speed `da/dt` at fraction t.
-    fn edge_rate(&self, t: f64) -> Result<f64> {
-        let a = self.contact.half_width(self.normal(t))?;
-        Ok(self.normal_change / self.contact.load_rate(a)?)
-    }
-}
-
-/// The contact half-width for `normal`, by Newton on the contact law `P(a) = J1(a, 0)/A` from
-/// `near` (a half-width for a nearby load), to the 1e-15 relative step of
-/// [`Contact::half_width`]; that bracketed solve from scratch when Newton leaves the profile's
-/// range or does not settle in a few steps.
-fn half_width_near(contact: &Contact, normal: f64, near: f64) -> Result<f64> {
-    if matches!(
-        contact.profile.shape(),
-        Shape::Hertz { .. } | Shape::PowerLaw { .. }
-    ) {
-        // Closed forms.
-        return contact.half_width(normal);
-    }
-    let a_comp = contact.compliance().value();
-    let mut a = near;
-    for _ in 0..6 {
-        if !(a.is_finite() && a > 0.0) {
-            break;
-        }
-        let Ok((j1, j1_d)) = contact.profile.symmetric_moment(a) else {
-            break;
-        };
-        let next = a - (j1 / a_comp - normal) * a_comp / j1_d;
-        if (next - a).abs() <= 1e-15 * a {
-            return Ok(next);
-        }
-        a = next;
-    }
-    contact.half_width(normal)
 }
 
 /// Checks that both slip zones grow monotonically through both halves of a partial-slip cycle,
@@ -163,69 +145,114 @@ fn half_width_near(contact: &Contact, normal: f64, near: f64) -> Result<f64> {
 /// is the end with the smaller Q, `dQ = Q2 - Q1 >= 0`, `dsigma = sigma1 - sigma2`, x positive in
 /// the direction of positive Q (so the right edge is `n`, the left `-m`).
 ///
-/// At the start of a half (t = 0, the stick zone is the whole contact `a_s`) the boundary speeds
-/// are exact for any profile: `n' = (f dP - dS_right)/(2 f P'(a_s))`,
-/// `m' = (f dP - dS_left)/(2 f P'(a_s))` and `a' = dP/P'(a_s)`, with `dP = P_end - P_start`,
-/// `P'(a) = dP/da` and the equivalent-shear ranges `dS_left = dQ - pi a_s dsigma/4`,
-/// `dS_right = dQ + pi a_s dsigma/4`; so `n' <= min(0, a')` exactly when `dS_right >= f |dP|`
-/// (docs/validity.md, "Start of a half"). Along the half `m, n` must be non-increasing and stay
-/// below `min(a_s, a(t))`. For a convex profile ([`crate::Profile::is_convex`]) the start-of-half
-/// test implies that (docs/validity.md, "Along the half": the boundaries move inwards while
-/// `d |pi A dsigma/(8f)| < A (dQ - f dP)/(2f)`, which holds at t = 0 and then only gets easier as
-/// d shrinks); any other profile is also sampled by [`sample_slip_growth`] at 32 points per half.
+/// At the start of a half (t = 0, the stick zone is the whole contact `[b1_s, b2_s]`) the test is
+/// exact for any profile, edge by edge: the equivalent shear must change by more than f times
+/// the pressure's edge coefficient, `dS_edge > f |dP_edge|` with `dS_left = dQ - pi a_s dsigma/4`,
+/// `dS_right = dQ + pi a_s dsigma/4` and `dP_edge` from [`NormalContact::edge_load_changes`]
+/// (dP at both edges without a moment: the symmetric test `dS >= f |dP|`; docs/validity.md,
+/// "Start of a half" and "Under a moment"). The boundary speed reported is
+/// `(f dP_edge - dS_edge)/(f K_N pi sqrt(2 a_s))`, which is `(f dP - dS)/(2 f P'(a_s))` for a
+/// centred contact. Along the half `m, n` must be non-increasing and stay inside the start's and
+/// the current contact. For a convex profile ([`crate::Profile::is_convex`]) without a moment
+/// the start-of-half test implies that (docs/validity.md, "Along the half"); under a moment the
+/// bounds on the rotation's rate along the segment ([`SegmentPath::bounds`]) settle it when
+/// `a_s max|kappa + (pi/2) theta'| < A |c|` and
+/// `a_max max|kappa - (pi/2) theta'| < A (dQ + f dP)/(2f)` ("Under a moment"); any other
+/// cycle is followed at 32 points per half by [`sample_slip_growth`]'s scan.
 #[cfg(test)]
 pub(super) fn check_slip_grows(
     contact: &Contact,
     cycle: &Cycle,
     options: &SteadyOptions,
 ) -> Result<()> {
-    check_slip_grows_with(contact, cycle, half_widths(contact, cycle)?, options)
+    let contacts = contacts(contact, cycle)?;
+    let path = path_of(contact, cycle, contacts)?;
+    check_slip_grows_with(contact, cycle, contacts, &path, options)
 }
 
-/// [`check_slip_grows`] with the contact half-widths at the two points (as given) known.
+/// [`check_slip_grows`] with the contacts at the two points (as given) and along the segment
+/// known.
 pub(super) fn check_slip_grows_with(
     contact: &Contact,
     cycle: &Cycle,
-    half_width: PerPoint<f64>,
+    contacts: PerPoint<NormalContact>,
+    path: &SegmentPath,
     options: &SteadyOptions,
 ) -> Result<()> {
     let f = contact.friction.value();
     let (d_q, d_sigma) = (cycle.shear_range(), cycle.bulk_range());
-    let halves = halves(cycle, half_width);
+    let halves = halves(cycle, contacts);
     // The start of each half first: exact, and where a failure is most often found.
-    for (half, start, end, a_s) in halves {
+    for &(half, start, end, start_contact) in &halves {
         let d_p = end.normal() - start.normal();
-        let load_rate = contact.load_rate(a_s)?;
+        let d_m = end.moment() - start.moment();
+        let a_s = start_contact.half_width();
+        let d_edge = start_contact.edge_load_changes(d_p, d_m);
+        let speeds = edge_speeds(&start_contact, d_p, d_m);
         for edge in Edge::BOTH {
-            let sign = if edge == Edge::Left { -1.0 } else { 1.0 };
-            let equivalent_shear_range = d_q + sign * PI * a_s * d_sigma / 4.0;
-            if equivalent_shear_range <= f * d_p.abs() {
+            let equivalent_shear_range = path.shear_change(a_s, edge);
+            if equivalent_shear_range <= f * d_edge[edge].abs() {
+                let root = PI * (2.0 * a_s).sqrt();
                 return Err(Error::SlipReversesInHalf {
                     half,
                     edge,
                     fraction: 0.0,
-                    boundary_rate: (f * d_p - equivalent_shear_range) / (2.0 * f * load_rate),
-                    limit_rate: (d_p / load_rate).min(0.0),
+                    boundary_rate: (f * d_edge[edge] - equivalent_shear_range)
+                        / (f * start_contact.normal_intensity(edge) * root),
+                    limit_rate: speeds[edge].min(0.0),
                 });
             }
         }
     }
     if contact.profile.is_convex() {
-        return Ok(());
+        if path.is_centred() || settled_by_bounds(contact, cycle, &halves, path) {
+            return Ok(());
+        }
     }
     scan(contact, &halves, d_q, d_sigma, SAMPLES_PER_HALF, options)
+}
+
+/// Under a moment on a convex profile: whether the bounds on the rotation's rate along the
+/// segment prove that both stick boundaries move inwards through each half and stay inside the
+/// current contact (docs/validity.md, "Under a moment"). With `kappa = pi A dsigma/(8f)` and
+/// `c = (f dP - dQ)/(2f) < 0` on each half: the boundaries move inwards while
+/// `d |kappa + (pi/2) theta'| < A |c|`, and the zone stays inside the current contact when
+/// `a(t) |kappa - (pi/2) theta_mean'| < A (dQ + f dP)/(2f)`; d never exceeds `a_s`, and the
+/// rates are bounded by the segment's samples. False means "not proven", not "fails".
+fn settled_by_bounds(
+    contact: &Contact,
+    cycle: &Cycle,
+    halves: &[HalfCycle; 2],
+    path: &SegmentPath,
+) -> bool {
+    let f = contact.friction.value();
+    let a_comp = contact.compliance().value();
+    let d_q = cycle.shear_range();
+    let kappa = PI * a_comp * cycle.bulk_range() / (8.0 * f);
+    let bounds = path.bounds();
+    halves.iter().all(|&(_, start, end, start_contact)| {
+        let d_p = end.normal() - start.normal();
+        let reversed = start != cycle.low();
+        let c = (f * d_p - d_q) / (2.0 * f);
+        let inwards =
+            start_contact.half_width() * bounds.largest_sum(kappa, reversed) < a_comp * c.abs();
+        let inside = bounds.half_width * bounds.largest_sum(-kappa, reversed)
+            < a_comp * (d_q + f * d_p) / (2.0 * f);
+        c < 0.0 && inwards && inside
+    })
 }
 
 /// The along-the-half part of [`check_slip_grows`] on its own, for any profile: the partial path
 /// (docs/validity.md, "Along the half") solved at `samples_per_half` evenly spaced points of each
 /// half, with the boundary speeds `(d', e') = -J^-1 dR/dt` from the exact Jacobian of the
-/// stick-zone equations; the margins `-n'`, `-m'`, `(min(a_s, a(t)) - n)/t` and
-/// `(min(a_s, a(t)) - m)/t` must stay above `-1e-9 a_s`, and the first failure is located by
+/// stick-zone equations; the margins `-n'`, `-m'`, `(min(b2_s, b2(t)) - n)/t` and
+/// `(-m - max(b1_s, b1(t)))/t` must stay above `-1e-9 a_s`, and the first failure is located by
 /// bisection to 1e-10 of the half. It does not repeat the start-of-half test. A violation that
 /// starts and ends between two samples is missed.
 ///
-/// [`check_slip_grows`] calls it for profiles that are not convex; for convex ones it is the
-/// numerical check of the theorem that makes it unnecessary (the tests run it on a grid of cycles).
+/// [`check_slip_grows`] calls it for profiles that are not convex and for moments whose bounds
+/// do not settle the question; for convex ones without a moment it is the numerical check of the
+/// theorem that makes it unnecessary (the tests run it on a grid of cycles).
 ///
 /// # Errors
 /// [`Error::SlipReversesInHalf`] at the first failure found; [`Error::InvalidCount`] when
@@ -245,7 +272,7 @@ pub(super) fn sample_slip_growth(
             max: u64::MAX,
         });
     }
-    let halves = halves(cycle, half_widths(contact, cycle)?);
+    let halves = halves(cycle, contacts(contact, cycle)?);
     scan(
         contact,
         &halves,
@@ -256,36 +283,50 @@ pub(super) fn sample_slip_growth(
     )
 }
 
-/// One half-cycle: which half as given, its start and end points, and the contact half-width at
-/// its start.
-type HalfCycle = (Half, LoadPoint, LoadPoint, f64);
+/// One half-cycle: which half as given, its start and end points, and the contact at its start.
+type HalfCycle = (Half, LoadPoint, LoadPoint, NormalContact);
 
 /// Both halves, the one that starts from the larger contact first (where the weak edge binds; Q
 /// rising first on a tie), so that the failure reported does not depend on the order the points
 /// were given in; `Half` numbers them as given.
-fn halves(cycle: &Cycle, half_width: PerPoint<f64>) -> [HalfCycle; 2] {
+fn halves(cycle: &Cycle, contacts: PerPoint<NormalContact>) -> [HalfCycle; 2] {
     let (low, high) = (cycle.low(), cycle.high());
-    let PerPoint { first, second } = half_width;
-    let (rising, falling, a_low, a_high) = if cycle.swapped() {
+    let PerPoint { first, second } = contacts;
+    let (rising, falling, c_low, c_high) = if cycle.swapped() {
         (Half::Second, Half::First, second, first)
     } else {
         (Half::First, Half::Second, first, second)
     };
-    let mut halves = [(rising, low, high, a_low), (falling, high, low, a_high)];
-    if halves[1].3 > halves[0].3 {
+    let mut halves = [(rising, low, high, c_low), (falling, high, low, c_high)];
+    if halves[1].3.half_width() > halves[0].3.half_width() {
         halves.swap(0, 1);
     }
     halves
 }
 
-/// The contact half-widths at the two points of the cycle, as given.
+/// The contacts at the two points of the cycle, as given.
 #[cfg(test)]
-fn half_widths(contact: &Contact, cycle: &Cycle) -> Result<PerPoint<f64>> {
+fn contacts(contact: &Contact, cycle: &Cycle) -> Result<PerPoint<NormalContact>> {
     let (first, second) = cycle.as_given();
     Ok(PerPoint {
-        first: contact.half_width(first.normal())?,
-        second: contact.half_width(second.normal())?,
+        first: contact.contact_at(&first)?,
+        second: contact.contact_at(&second)?,
     })
+}
+
+/// The segment's contacts for [`check_slip_grows`].
+#[cfg(test)]
+fn path_of(
+    contact: &Contact,
+    cycle: &Cycle,
+    contacts: PerPoint<NormalContact>,
+) -> Result<SegmentPath> {
+    let (low, high) = if cycle.swapped() {
+        (contacts.second, contacts.first)
+    } else {
+        (contacts.first, contacts.second)
+    };
+    SegmentPath::new(contact, cycle, low, high)
 }
 
 /// The sampling of [`sample_slip_growth`] over the two halves.
@@ -297,35 +338,36 @@ fn scan(
     samples_per_half: usize,
     options: &SteadyOptions,
 ) -> Result<()> {
-    for &(half, start, end, a_s) in halves {
+    for &(half, start, end, start_contact) in halves {
         let path = HalfPath {
             contact,
             start,
-            start_half_width: a_s,
-            normal_change: end.normal() - start.normal(),
+            end,
+            start_contact,
             shear_range: d_q,
             bulk_range: d_sigma,
             options,
         };
-        // Along the half: margins that must stay >= 0, per edge: -(boundary speed), and
-        // (min(a_s, a(t)) - boundary)/t.
+        let a_s = start_contact.half_width();
+        // Along the half: margins that must stay >= 0, per edge: -(boundary speed), and the
+        // distance inside the common part of the start's and the current contact, over t.
         let tolerance = 1e-9 * a_s;
         let margins = |p: &PathPoint, t: f64| -> [PerEdge<f64>; 2] {
-            let limit = p.limit;
             [
                 p.boundary_rate.map(|rate| -rate),
                 PerEdge {
-                    left: (limit + p.zone.left) / t,
-                    right: (limit - p.zone.right) / t,
+                    left: (p.zone.left - p.limit.left) / t,
+                    right: (p.limit.right - p.zone.right) / t,
                 },
             ]
         };
-        let mut guess = Some((a_s, 0.0));
-        let mut near = a_s;
+        let mut guess = Some((a_s, start_contact.centre()));
+        let mut near = start_contact;
         let mut previous_t = 0.0;
         let h = 1.0 / samples_per_half as f64;
         for k in 1..=samples_per_half {
             let t = k as f64 * h;
+            let before = near;
             let p = path.at(t, guess, &mut near)?;
             guess = Some(p.predict(h));
             let failing = margins(&p, t);
@@ -346,7 +388,7 @@ fn scan(
                 let (mut lo, mut hi) = (previous_t, t);
                 while hi - lo > 1e-10 {
                     let mid = 0.5 * (lo + hi);
-                    let mut near_mid = near;
+                    let mut near_mid = before;
                     let q = path.at(mid, guess, &mut near_mid)?;
                     if margins(&q, mid)[kind][edge] < -tolerance {
                         hi = mid;
@@ -362,14 +404,14 @@ fn scan(
             let Some((fraction, edge)) = first_failure else {
                 continue;
             };
-            let mut near_failure = near;
+            let mut near_failure = before;
             let q = path.at(fraction, guess, &mut near_failure)?;
             return Err(Error::SlipReversesInHalf {
                 half,
                 edge,
                 fraction,
                 boundary_rate: q.boundary_rate[edge],
-                limit_rate: path.edge_rate(fraction)?.min(0.0),
+                limit_rate: path.edge_rate(&near_failure, edge).min(0.0),
             });
         }
     }

@@ -5,6 +5,7 @@
 use super::traction::Traction;
 use crate::error::{Error, Result};
 use crate::history::History;
+use crate::labels::PerEdge;
 use crate::load::LoadPoint;
 use crate::march::{march, MarchOptions};
 use crate::normal::Contact;
@@ -18,6 +19,8 @@ pub struct MarchedTraction {
     pub load: LoadPoint,
     /// Contact half-width.
     pub half_width: f64,
+    /// The contact ends `[b1, b2]`.
+    pub ends: PerEdge<f64>,
     /// The traction ([`Traction::from_march`]).
     pub traction: Traction,
 }
@@ -48,11 +51,12 @@ pub fn marched(
     let mut failure = None;
     march(contact, history, options, |r, f| {
         if wanted[r.step] && failure.is_none() {
-            match Traction::from_march(r.half_width, f) {
+            match Traction::from_march_ends(r.ends, f) {
                 Ok(traction) => kept.push(MarchedTraction {
                     step: r.step,
                     load: r.load,
                     half_width: r.half_width,
+                    ends: r.ends,
                     traction,
                 }),
                 Err(e) => failure = Some(e),

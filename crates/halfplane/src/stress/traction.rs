@@ -8,6 +8,7 @@
 
 use super::edge::SqrtEdge;
 use crate::error::{physical, Error, Result};
+use crate::labels::PerEdge;
 use crate::march::Fields;
 
 /// Pressure `p` (compressive positive) and shear traction `q` (positive in `+x`, the traction
@@ -159,14 +160,31 @@ impl Traction {
                 valid: "a finite number >= 0",
             });
         }
-        if a == 0.0 {
+        Self::from_march_ends(PerEdge { left: -a, right: a }, fields)
+    }
+
+    /// [`Traction::from_march`] for a contact `[b1, b2]` anywhere (under a moment, or on an
+    /// asymmetric profile): nodes at `b1` and `b2` and at every cell centre strictly between.
+    /// `b1 = b2` (unloaded), or a contact without a cell centre inside, gives no traction.
+    pub fn from_march_ends(ends: PerEdge<f64>, fields: &Fields) -> Result<Self> {
+        let PerEdge { left, right } = ends;
+        physical("contact end b1", left)?;
+        physical("contact end b2", right)?;
+        if right < left {
+            return Err(Error::InvalidInput {
+                field: "contact end b2".into(),
+                value: right,
+                valid: "a contact end at or beyond b1",
+            });
+        }
+        if right == left {
             return Ok(Self::unloaded());
         }
-        let mut x = vec![-a];
+        let mut x = vec![left];
         let mut p = vec![0.0];
         let mut q = vec![0.0];
         for i in 0..fields.x.len() {
-            if fields.x[i].abs() < a {
+            if fields.x[i] > left && fields.x[i] < right {
                 x.push(fields.x[i]);
                 p.push(fields.pressure[i]);
                 q.push(fields.traction[i]);
@@ -175,7 +193,7 @@ impl Traction {
         if x.len() == 1 {
             return Ok(Self::unloaded());
         }
-        x.push(a);
+        x.push(right);
         p.push(0.0);
         q.push(0.0);
         Self::contact(&x, &p, &q)

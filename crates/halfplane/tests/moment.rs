@@ -1,0 +1,241 @@
+//! Moment-loaded and asymmetric contacts in the steady state and in marching, against
+//! independent references: the Hertz contact moved by M/P (exact), the Hertz closed form of the
+//! stick zone under a changing centroid, mirror symmetry, and time marching (one cell).
+//!
+//! Tolerances: 1e-10 relative to the contact's size where the reference is exact (the routes
+//! converge to rounding, about 1e-14; the margin covers the Newton tolerance of 1e-14 and the
+//! normal solve's 1e-15 compounded over a few steps). One cell against marching: the marched
+//! stick boundary is a cell edge.
+
+mod common;
+use common::*;
+use halfplane::evolution::evolve;
+use halfplane::history::{History, Ramp};
+use halfplane::march::{march, MarchOptions};
+use halfplane::steady::{self, Method, Regime, SteadyOptions};
+use halfplane::{Contact, Cycle, Edge, Error, GivenPoint, LoadPoint, Profile};
+
+fn with_moment(p: LoadPoint, moment: f64) -> LoadPoint {
+    p.with_moment("test", moment).unwrap()
+}
+
+fn implicit() -> SteadyOptions {
+    SteadyOptions::default().with_method(Method::Implicit)
+}
+
+/// The reference cycle with the moments `m1`, `m2`.
+fn reference_with(m1: f64, m2: f64) -> Cycle {
+    let (p1, p2) = theory_cycle().as_given();
+    Cycle::new(with_moment(p1, m1), with_moment(p2, m2))
+}
+
+fn close(a: f64, b: f64, scale: f64, what: &str) {
+    assert!(
+        (a - b).abs() <= 1e-10 * scale,
+        "{what}: {a} vs {b} (difference {:.2e} of {scale})",
+        (a - b).abs() / scale
+    );
+}
+
+#[test]
+fn hertz_under_a_constant_centroid_is_the_symmetric_solution_moved_by_m_over_p() {
+    // M = e0 P at both points: the pressure is the symmetric one moved by e0 and the pad rotates
+    // by -e0/R, a rigid shift of the whole problem. Every position moves by e0; every length,
+    // intensity and ratio is unchanged. Both routes: the closed form and the general equations.
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let plain = theory_cycle();
+    for e0 in [0.2, -0.35] {
+        let (p1, p2) = plain.as_given();
+        let moved = Cycle::new(
+            with_moment(p1, e0 * p1.normal()),
+            with_moment(p2, e0 * p2.normal()),
+        );
+        for options in [SteadyOptions::default(), implicit()] {
+            let s = steady::analyse(&c, &plain, &options).unwrap();
+            let m = steady::analyse(&c, &moved, &options).unwrap();
+            assert_eq!(m.regime, s.regime);
+            let scale = s.half_width.first;
+            for p in GivenPoint::BOTH {
+                let (cs, cm) = (s.contacts[p], m.contacts[p]);
+                for e in Edge::BOTH {
+                    close(cm.end(e), cs.end(e) + e0, scale, "contact end");
+                    let k = cs.normal_intensity(e);
+                    close(cm.normal_intensity(e), k, k, "K_N");
+                }
+                close(cm.rotation(), -e0 / RADIUS, 1.0 / RADIUS, "rotation -e0/R");
+            }
+            let (zs, zm) = (s.stick_zone.unwrap(), m.stick_zone.unwrap());
+            close(zm.left, zs.left + e0, scale, "stick zone left");
+            close(zm.right, zs.right + e0, scale, "stick zone right");
+            let (ws, wm) = (s.slip_zones.unwrap(), m.slip_zones.unwrap());
+            for e in Edge::BOTH {
+                for p in GivenPoint::BOTH {
+                    close(wm[e][p], ws[e][p], scale, "slip zone");
+                }
+            }
+            let (rs, rm) = (s.criteria.full_stick_ratio, m.criteria.full_stick_ratio);
+            close(rm, rs, rs, "full-stick ratio");
+        }
+        // The evolution along the cycle moves with it too.
+        let es = evolve(&c, &plain, 9, &SteadyOptions::default()).unwrap();
+        let em = evolve(&c, &moved, 9, &SteadyOptions::default()).unwrap();
+        for (ps, pm) in es.points.iter().zip(&em.points) {
+            close(
+                pm.stick_zone.left,
+                ps.stick_zone.left + e0,
+                1.0,
+                "evolution left",
+            );
+            close(
+                pm.stick_zone.right,
+                ps.stick_zone.right + e0,
+                1.0,
+                "evolution right",
+            );
+        }
+        assert_eq!(em.warnings, es.warnings);
+    }
+}
+
+#[test]
+fn a_changing_centroid_moves_the_hertz_stick_zone_by_the_mean_centroid() {
+    // Hertz: the slope g' + theta_m with theta_m = -(e1 + e2)/(2R) is the Hertz slope about
+    // (e1 + e2)/2, so the zone is the paper's, moved by the mean centroid:
+    // e = (e1 + e2)/2 - A R dsigma/(8f), d^2 = (A R/pi)(P1 + P2 - dQ/f). The general equations
+    // (Method::Implicit, Newton on the slope integrals) must give the same.
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let a_comp = c.compliance().value();
+    for (m1, m2) in [(100.0, 160.0), (-150.0, -100.0), (0.0, 40.0)] {
+        let cycle = reference_with(m1, m2);
+        let closed = steady::analyse(&c, &cycle, &SteadyOptions::default()).unwrap();
+        let general = steady::analyse(&c, &cycle, &implicit()).unwrap();
+        let (p1, p2) = (cycle.low(), cycle.high());
+        let mean = 0.5 * (p1.centroid() + p2.centroid());
+        let e = mean - a_comp * RADIUS * cycle.bulk_range() / (8.0 * 0.6);
+        let d = (a_comp * RADIUS / std::f64::consts::PI
+            * (p1.normal() + p2.normal() - cycle.shear_range() / 0.6))
+            .sqrt();
+        for s in [&closed, &general] {
+            let z = s.stick_zone.unwrap();
+            close(z.eccentricity(), e, d, "eccentricity");
+            close(z.half_width(), d, d, "half-width");
+        }
+    }
+}
+
+/// The mirror image of a cycle: x -> -x takes M to -M and Q to -Q, and keeps sigma: a bulk
+/// stress sigma_xx is unchanged by the reflection (the relative displacement `A sigma x/4`
+/// becomes `-A sigma (-x)/4`, the same), as the paper's `K_T = Q/(pi sqrt(2a)) +/- (sigma/4)
+/// sqrt(a/2)` shows: exchanging the edges and reversing q maps it to itself with Q -> -Q and
+/// sigma unchanged.
+fn mirrored(cycle: &Cycle) -> Cycle {
+    let (p1, p2) = cycle.as_given();
+    let flip = |p: LoadPoint| with_moment(point(p.normal(), -p.shear(), p.bulk()), -p.moment());
+    Cycle::new(flip(p1), flip(p2))
+}
+
+#[test]
+fn mirror_image_swaps_the_edges() {
+    // A flat punch with unequal edge radii and moment, and its mirror image (radii swapped, M and
+    // Q reversed, sigma kept, see `mirrored`): every zone is reflected, left and right
+    // exchanged. Exact by symmetry, so both analyses must agree to the solvers' tolerance.
+    let c = contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap());
+    let m = contact(Profile::flat_rounded_asymmetric(0.3, 70.0, 40.0).unwrap());
+    let cycle = Cycle::new(
+        with_moment(point(1000.0, -250.0, -20.0), 60.0),
+        with_moment(point(1400.0, 250.0, 20.0), 150.0),
+    );
+    let s = steady::analyse(&c, &cycle, &SteadyOptions::default()).unwrap();
+    let r = steady::analyse(&m, &mirrored(&cycle), &SteadyOptions::default()).unwrap();
+    assert_eq!(s.regime, Regime::PartialSlip);
+    assert_eq!(r.regime, s.regime);
+    let scale = s.half_width.first;
+    let (zs, zr) = (s.stick_zone.unwrap(), r.stick_zone.unwrap());
+    close(zr.left, -zs.right, scale, "mirrored stick zone left");
+    close(zr.right, -zs.left, scale, "mirrored stick zone right");
+    let (ws, wr) = (s.slip_zones.unwrap(), r.slip_zones.unwrap());
+    for p in GivenPoint::BOTH {
+        close(wr.left[p], ws.right[p], scale, "mirrored slip left");
+        close(wr.right[p], ws.left[p], scale, "mirrored slip right");
+        close(
+            r.contacts[p].end(Edge::Left),
+            -s.contacts[p].end(Edge::Right),
+            scale,
+            "mirrored contact",
+        );
+    }
+}
+
+/// The stick zone at the end of each half of the second of two in-phase cycles, marched.
+fn marched_zones(c: &Contact, cycle: &Cycle, cells: usize, steps: usize) -> (f64, [[f64; 2]; 2]) {
+    let (p1, p2) = cycle.as_given();
+    let history = History::in_phase(p1, p2, 2, steps, Ramp::NormalFirst, 10).unwrap();
+    let r = march(
+        c,
+        &history,
+        &MarchOptions::default().with_cells(cells).unwrap(),
+        |_, _| {},
+    )
+    .unwrap();
+    let start = history.cycles().unwrap().first_step() + 2 * steps;
+    let w = r.x[1] - r.x[0];
+    let zone = |k: usize| r.steps[k].largest_stick().unwrap();
+    (w, [zone(start + steps - 1), zone(start + 2 * steps - 1)])
+}
+
+#[test]
+fn steady_agrees_with_marching_when_the_centroid_moves_along_the_cycle() {
+    // Hertz and a flat punch with unequal radii, with M/P changing along the cycle: the
+    // permanent stick zone of the analysis against the stick zone marched at both ends of the
+    // steady cycle, within one cell at 800 cells.
+    let cases = [
+        (
+            contact(Profile::hertz(RADIUS).unwrap()),
+            reference_with(50.0, 120.0),
+        ),
+        (
+            contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap()),
+            Cycle::new(
+                with_moment(point(1000.0, -250.0, -20.0), 60.0),
+                with_moment(point(1400.0, 250.0, 20.0), 150.0),
+            ),
+        ),
+    ];
+    for (c, cycle) in cases {
+        let s = steady::analyse(&c, &cycle, &SteadyOptions::default()).unwrap();
+        let z = s.stick_zone.unwrap();
+        let (w, zones) = marched_zones(&c, &cycle, 800, 40);
+        for [l, r] in zones {
+            assert!(
+                (l - z.left).abs() <= w && (r - z.right).abs() <= w,
+                "{:?}: marched [{l:.5}, {r:.5}] vs steady [{:.5}, {:.5}], cell {w:.5}",
+                c.profile().shape(),
+                z.left,
+                z.right
+            );
+        }
+    }
+}
+
+#[test]
+fn a_moment_beyond_a_table_is_refused_naming_the_point() {
+    // A table from -1 to 1: at P = 1000 the contact (a ~ 0.76 for Hertz R = 50) leaves it when
+    // its centroid passes about 0.25. The error names the point's moment and the valid range.
+    let x: Vec<f64> = (0..=40).map(|i| -1.0 + 0.05 * i as f64).collect();
+    let g = x.iter().map(|x| x * x / (2.0 * RADIUS)).collect();
+    let c = contact(Profile::tabulated(x, g, vec![]).unwrap());
+    let cycle = reference_with(0.0, 900.0);
+    let err = steady::analyse(&c, &cycle, &SteadyOptions::default()).unwrap_err();
+    let Error::MomentOutsideTable {
+        field,
+        value,
+        largest,
+        ..
+    } = err
+    else {
+        panic!("{err:?}");
+    };
+    assert_eq!(field, "cycle.point2.moment");
+    assert_eq!(value, 900.0);
+    assert!(largest < 900.0 && largest > 0.0, "largest {largest}");
+}
