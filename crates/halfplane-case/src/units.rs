@@ -54,6 +54,8 @@ pub enum Quantity {
     Intensity,
     /// Dissipated energy per unit thickness: force times length per length.
     Energy,
+    /// Moment per unit thickness (M): force times length per length, written "N mm/mm".
+    Moment,
 }
 
 impl Units {
@@ -70,7 +72,9 @@ impl Units {
             Quantity::Length => self.length.clone(),
             Quantity::Stress => self.stress.clone(),
             Quantity::Intensity => format!("{} {}^1/2", self.stress, self.length),
-            Quantity::Energy => format!("{} {}/{}", self.force, self.length, self.length),
+            Quantity::Energy | Quantity::Moment => {
+                format!("{} {}/{}", self.force, self.length, self.length)
+            }
         }
     }
 

@@ -108,6 +108,7 @@ fn steady_csv_is_the_json_in_one_row_of_fixed_columns() {
                     )
                 }
                 serde_json::Value::String(s) => assert_eq!(cell, s, "{file} {path}"),
+                serde_json::Value::Bool(b) => assert_eq!(cell, &b.to_string(), "{file} {path}"),
                 serde_json::Value::Array(a) => {
                     assert_eq!(cell.split_whitespace().count(), a.len(), "{file} {path}")
                 }

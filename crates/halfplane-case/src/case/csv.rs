@@ -48,22 +48,34 @@ pub fn read_csv(
     columns: &[&str],
     max_rows: usize,
 ) -> Result<(Vec<f64>, Vec<usize>)> {
+    read_csv_with(table, &[columns], max_rows).map(|(_, values, lines)| (values, lines))
+}
+
+/// [`read_csv`] for a table whose header may name any one of `headers` (for example a history
+/// with or without its `moment` column): also returns which one it named.
+pub fn read_csv_with(
+    table: &Table,
+    headers: &[&[&str]],
+    max_rows: usize,
+) -> Result<(usize, Vec<f64>, Vec<usize>)> {
     match table {
         Table::File { path, .. } => {
             let file = std::fs::File::open(path).with_context(|| format!("cannot read {table}"))?;
-            read_lines(file, table, columns, max_rows)
+            read_lines(file, table, headers, max_rows)
         }
-        Table::Data { text, .. } => read_lines(text.as_bytes(), table, columns, max_rows),
+        Table::Data { text, .. } => read_lines(text.as_bytes(), table, headers, max_rows),
     }
 }
 
 fn read_lines(
     reader: impl Read,
     table: &Table,
-    columns: &[&str],
+    headers: &[&[&str]],
     max_rows: usize,
-) -> Result<(Vec<f64>, Vec<usize>)> {
-    let header_text = columns.join(",");
+) -> Result<(usize, Vec<f64>, Vec<usize>)> {
+    let mut columns: &[&str] = headers[0];
+    let mut chosen = 0;
+    let mut header_text = columns.join(",");
     // The csv crate splits the lines into cells and skips empty lines; cells are trimmed here
     // (without the copy the crate's trimming makes of every record), and comments and lines of
     // spaces skipped. Lines end at '\n' (a CRLF's '\r' is trimmed with the last cell). Quotes
@@ -108,10 +120,17 @@ fn read_lines(
             let names: Vec<String> = (0..record.len())
                 .map(|i| cell(i).to_ascii_lowercase())
                 .collect();
-            if names != columns {
+            let Some(found) = headers.iter().position(|h| names == *h) else {
                 let text = (0..record.len()).map(cell).collect::<Vec<_>>().join(",");
-                bail!("{table}, line {line}: header is \"{text}\", expected \"{header_text}\"");
-            }
+                let expected = headers
+                    .iter()
+                    .map(|h| format!("\"{}\"", h.join(",")))
+                    .collect::<Vec<_>>()
+                    .join(" or ");
+                bail!("{table}, line {line}: header is \"{text}\", expected {expected}");
+            };
+            (chosen, columns) = (found, headers[found]);
+            header_text = columns.join(",");
             header_seen = true;
             continue;
         }
@@ -142,7 +161,7 @@ fn read_lines(
     if numbers.is_empty() {
         bail!("{table} has a header but no rows");
     }
-    Ok((values, numbers))
+    Ok((chosen, values, numbers))
 }
 
 /// A reader that notes where the lines it passes on end, so that a record's line is known from

@@ -15,7 +15,7 @@ mod fatigue;
 mod table;
 
 use count::{count_in, RawCount};
-pub use csv::{read_csv, Table};
+pub use csv::{read_csv, read_csv_with, Table};
 pub use fatigue::FatigueSettings;
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
@@ -52,6 +52,7 @@ struct RawHistory {
     normal: Option<RawHarmonic>,
     shear: Option<RawHarmonic>,
     bulk: Option<RawHarmonic>,
+    moment: Option<RawHarmonic>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -87,6 +88,8 @@ struct RawFriction {
 struct RawProfile {
     kind: Option<String>,
     radius: Option<f64>,
+    left_radius: Option<f64>,
+    right_radius: Option<f64>,
     flat_half_width: Option<f64>,
     coefficient: Option<f64>,
     exponent: Option<f64>,
@@ -108,6 +111,7 @@ struct RawPoint {
     normal: Option<f64>,
     shear: Option<f64>,
     bulk: Option<f64>,
+    moment: Option<f64>,
 }
 
 /// A resolved case: a validated contact and, when the file has them, a cycle and a history.
@@ -253,8 +257,9 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         None => None,
         Some(c) => {
             let point = |raw: Option<RawPoint>, name: &str| -> Result<LoadPoint> {
-                let r = raw.ok_or_else(|| anyhow!("missing field cycle.{name}: give {{ normal = P > 0, shear = Q, bulk = sigma }}"))?;
+                let r = raw.ok_or_else(|| anyhow!("missing field cycle.{name}: give {{ normal = P > 0, shear = Q, bulk = sigma, moment = M }}"))?;
                 let field = format!("cycle.{name}");
+                let moment = r.moment.unwrap_or(0.0);
                 Ok(LoadPoint::new(
                     &field,
                     required(
@@ -268,7 +273,8 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
                         "the shear load Q (N/mm)",
                     )?,
                     r.bulk.unwrap_or(0.0),
-                )?)
+                )?
+                .with_moment(&field, moment)?)
             };
             Some(Cycle::new(
                 point(c.point1, "point1")?,
@@ -363,6 +369,7 @@ fn resolve_history(
             "normal",
             "shear",
             "bulk",
+            "moment",
         ],
         other => bail!(
             "invalid history.kind = \"{other}\": must be one of \"file\", \"cycle\", \"harmonic\""
@@ -381,6 +388,7 @@ fn resolve_history(
         ("normal", h.normal.is_some()),
         ("shear", h.shear.is_some()),
         ("bulk", h.bulk.is_some()),
+        ("moment", h.moment.is_some()),
     ];
     reject_unused("history", &kind, used, &given)?;
     let max = halfplane::history::MAX_INCREMENTS;
@@ -405,7 +413,7 @@ fn resolve_history(
     Ok(match kind.as_str() {
         "file" => {
             let table = table::source("history", h.file.as_deref(), h.data.as_deref(), dir)?
-                .ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk), relative to the case file, or its text as history.data"))?;
+                .ok_or_else(|| anyhow!("missing field history.file: give the CSV (columns normal,shear,bulk, and moment if any), relative to the case file, or its text as history.data"))?;
             table::history_rows(&table)?
         }
         "cycle" => {
@@ -452,10 +460,13 @@ fn resolve_history(
             if h.normal.is_none() {
                 bail!("missing field history.normal: give {{ mean = P0 > 0, amplitude = ..., phase = degrees }}");
             }
-            History::harmonic(
-                harmonic(h.normal, "normal")?,
-                harmonic(h.shear, "shear")?,
-                harmonic(h.bulk, "bulk")?,
+            History::harmonic_with_moment(
+                [
+                    harmonic(h.normal, "normal")?,
+                    harmonic(h.shear, "shear")?,
+                    harmonic(h.bulk, "bulk")?,
+                    harmonic(h.moment, "moment")?,
+                ],
                 cycle_count,
                 count(
                     &h.steps_per_cycle,
@@ -473,13 +484,15 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
     let kind = p.kind.clone().ok_or_else(|| anyhow!("missing field profile.kind: give one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""))?;
     let used: &[&str] = match kind.as_str() {
         "hertz" => &["radius"],
-        "flat-rounded" => &["radius", "flat_half_width"],
+        "flat-rounded" => &["radius", "left_radius", "right_radius", "flat_half_width"],
         "power-law" => &["coefficient", "exponent"],
         "tabulated" => &["file", "data", "kinks"],
         other => bail!("invalid profile.kind = \"{other}\": must be one of \"hertz\", \"flat-rounded\", \"power-law\", \"tabulated\""),
     };
     let given = [
         ("radius", p.radius.is_some()),
+        ("left_radius", p.left_radius.is_some()),
+        ("right_radius", p.right_radius.is_some()),
         ("flat_half_width", p.flat_half_width.is_some()),
         ("coefficient", p.coefficient.is_some()),
         ("exponent", p.exponent.is_some()),
@@ -494,21 +507,30 @@ fn resolve_profile(p: RawProfile, dir: &Path) -> Result<Profile> {
             "profile.radius",
             "the relative radius of curvature R > 0 (mm)",
         )?)?,
-        "flat-rounded" => Profile::flat_rounded(
-            required(
+        "flat-rounded" => {
+            let b = required(
                 p.flat_half_width,
                 "profile.flat_half_width",
                 "the flat half-width b >= 0 (mm)",
-            )?,
-            required(p.radius, "profile.radius", "the edge radius R > 0 (mm)")?,
-        )?,
+            )?;
+            match (p.radius, p.left_radius, p.right_radius) {
+                (Some(r), None, None) => Profile::flat_rounded(b, r)?,
+                (None, Some(left), Some(right)) => {
+                    Profile::flat_rounded_asymmetric(b, left, right)?
+                }
+                (Some(_), _, _) => bail!("profile.radius and profile.left_radius/right_radius both given: give radius (equal edges) or left_radius and right_radius (unequal edges), not both"),
+                (None, Some(_), None) => bail!("missing field profile.right_radius: give the right edge radius R_R > 0 (mm) with left_radius, or radius alone for equal edges"),
+                (None, None, Some(_)) => bail!("missing field profile.left_radius: give the left edge radius R_L > 0 (mm) with right_radius, or radius alone for equal edges"),
+                (None, None, None) => bail!("missing field profile.radius: give the edge radius R > 0 (mm), or left_radius and right_radius for unequal edges"),
+            }
+        }
         "power-law" => Profile::power_law(
             required(p.coefficient, "profile.coefficient", "B > 0 in g = B|x|^k")?,
             required(p.exponent, "profile.exponent", "k >= 1 in g = B|x|^k")?,
         )?,
         _ => {
             let table = table::source("profile", p.file.as_deref(), p.data.as_deref(), dir)?
-                .ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g with x >= 0), relative to the case file, or its text as profile.data"))?;
+                .ok_or_else(|| anyhow!("missing field profile.file: give the CSV file (columns x,g from x = 0, mirrored, or over both sides from a negative x), relative to the case file, or its text as profile.data"))?;
             table::profile_table(&table, p.kinks.unwrap_or_default())?
         }
     })

@@ -3,7 +3,7 @@
 //! as the CSV text itself (`data = """..."""`): the same columns and the same reader, so both
 //! forms give the same numbers. Errors name the table as the case gives it and its line.
 
-use super::csv::{read_csv, Table};
+use super::csv::{read_csv, read_csv_with, Table};
 use anyhow::{anyhow, bail, Result};
 use halfplane::history::History;
 use halfplane::Profile;
@@ -31,15 +31,29 @@ pub(super) fn source<'a>(
     }
 }
 
-/// A history from its table of rows `normal,shear,bulk` (one increment each).
+/// A history from its table of rows `normal,shear,bulk` or `normal,shear,bulk,moment` (one
+/// increment each; the moment is 0 without its column).
 pub(super) fn history_rows(table: &Table) -> Result<History> {
-    let (values, lines) = read_csv(
+    let (chosen, values, lines) = read_csv_with(
         table,
-        &["normal", "shear", "bulk"],
+        &[
+            &["normal", "shear", "bulk"],
+            &["normal", "shear", "bulk", "moment"],
+        ],
         halfplane::history::MAX_INCREMENTS,
     )?;
-    let rows: Vec<[f64; 3]> = values.chunks_exact(3).map(|r| [r[0], r[1], r[2]]).collect();
-    History::from_rows(&rows).map_err(|e| match e {
+    let rows: Vec<[f64; 4]> = if chosen == 0 {
+        values
+            .chunks_exact(3)
+            .map(|r| [r[0], r[1], r[2], 0.0])
+            .collect()
+    } else {
+        values
+            .chunks_exact(4)
+            .map(|r| [r[0], r[1], r[2], r[3]])
+            .collect()
+    };
+    History::from_moment_rows(&rows).map_err(|e| match e {
         halfplane::Error::InvalidRow {
             row,
             column,

@@ -1,6 +1,6 @@
 //! The `evolve` report: one row per point of each half-cycle.
 
-use super::{Cell, Column, Style};
+use super::{Cell, Column, Shown, Style};
 use crate::units::{Quantity, Units};
 use halfplane::evolution::{Evolution, EvolutionWarning};
 use serde::Serialize;
@@ -19,6 +19,9 @@ pub struct EvolveRow {
     asymptotic_stick_left: f64,
     asymptotic_stick_right: f64,
     state: &'static str,
+    moment: f64,
+    contact_left: f64,
+    contact_right: f64,
 }
 
 /// A column of lengths (a, stick and asymptotic boundaries), to 6 decimals.
@@ -38,7 +41,7 @@ const fn load(
 
 impl EvolveRow {
     /// The columns of every format, in order (the CSV header is their keys).
-    pub const COLUMNS: [Column<Self>; 11] = [
+    pub const COLUMNS: [Column<Self>; 14] = [
         Column::<Self>::new("half", Quantity::None, |r| Cell::Int(r.half.into()))
             .table(4, Style::Fixed(0)),
         load("fraction", Quantity::None, 8, |r| Cell::Num(r.fraction)),
@@ -61,6 +64,15 @@ impl EvolveRow {
         })
         .titled("asym_right"),
         Column::<Self>::new("state", Quantity::None, |r| Cell::Text(r.state.into())),
+        Column::<Self>::new("moment", Quantity::Moment, |r| Cell::Num(r.moment)).only(Shown::Csv),
+        Column::<Self>::new("contact_left", Quantity::Length, |r| {
+            Cell::Num(r.contact_left)
+        })
+        .only(Shown::Csv),
+        Column::<Self>::new("contact_right", Quantity::Length, |r| {
+            Cell::Num(r.contact_right)
+        })
+        .only(Shown::Csv),
     ];
 }
 
@@ -93,6 +105,9 @@ impl EvolveReport {
                     asymptotic_stick_left: p.asymptotic_stick_zone.left,
                     asymptotic_stick_right: p.asymptotic_stick_zone.right,
                     state: p.state.as_str(),
+                    moment: p.load.moment(),
+                    contact_left: p.contact.end(halfplane::Edge::Left),
+                    contact_right: p.contact.end(halfplane::Edge::Right),
                 })
                 .collect(),
             warnings: warnings(ev),
@@ -159,6 +174,9 @@ mod tests {
             asymptotic_stick_left: -1.0,
             asymptotic_stick_right: 1.0,
             state: "full-stick",
+            moment: 0.0,
+            contact_left: -1.0,
+            contact_right: 1.0,
         };
         let mut columns: Vec<String> = EvolveRow::COLUMNS.iter().map(|c| c.key.into()).collect();
         columns.sort();

@@ -16,6 +16,9 @@ pub struct MarchStepRow<'a> {
     shear: f64,
     bulk: f64,
     half_width: f64,
+    moment: f64,
+    contact_left: f64,
+    contact_right: f64,
     stick_intervals: &'a [[f64; 2]],
     largest_stick: Option<[f64; 2]>,
     energy_increment: f64,
@@ -36,7 +39,7 @@ impl<'a> MarchStepRow<'a> {
     /// The columns of the CSV and the summary table, in order. The stick columns hold the largest
     /// stick interval (empty in CSV, "-" in the table, when none), `stick_intervals` every
     /// interval as `left:right`, space-separated, and `runs` (table only) how many there are.
-    pub const COLUMNS: [StepColumn<'a>; 12] = {
+    pub const COLUMNS: [StepColumn<'a>; 15] = {
         use Quantity::{Energy, ForcePerLength, Length, Stress};
         use Style::Fixed;
         [
@@ -66,6 +69,12 @@ impl<'a> MarchStepRow<'a> {
             .only(Shown::Csv),
             Column::<Self>::new("energy", Energy, |r| Cell::Num(r.energy)).only(Shown::Csv),
             Column::<Self>::new("passes", Quantity::None, |r| Cell::Int(r.passes)).only(Shown::Csv),
+            Column::<Self>::new("moment", Quantity::Moment, |r| Cell::Num(r.moment))
+                .only(Shown::Csv),
+            Column::<Self>::new("contact_left", Length, |r| Cell::Num(r.contact_left))
+                .only(Shown::Csv),
+            Column::<Self>::new("contact_right", Length, |r| Cell::Num(r.contact_right))
+                .only(Shown::Csv),
             Column::<Self>::new("runs", Quantity::None, |r| {
                 Cell::Int(r.stick_intervals.len())
             })
@@ -147,6 +156,9 @@ impl<'a> MarchReport<'a> {
                     shear: s.load.shear(),
                     bulk: s.load.bulk(),
                     half_width: s.half_width,
+                    moment: s.load.moment(),
+                    contact_left: s.ends.left,
+                    contact_right: s.ends.right,
                     stick_intervals: &s.stick_intervals,
                     largest_stick: s.largest_stick(),
                     energy_increment: s.energy_increment,

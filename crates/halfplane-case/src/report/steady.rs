@@ -4,7 +4,7 @@
 use crate::units::{Quantity, Units};
 use halfplane::asymptotic::AsymptoticSteady;
 use halfplane::steady::{GivenPoint, Regime, SteadyState};
-use halfplane::{Contact, Shape, StickZone};
+use halfplane::{Contact, Edge, NormalContact, Shape, StickZone};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -32,6 +32,10 @@ pub(crate) struct ProfileReport {
     pub(crate) kind: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     radius: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    left_radius: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    right_radius: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     flat_half_width: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -62,6 +66,7 @@ struct PointReport {
     normal: f64,
     shear: f64,
     bulk: f64,
+    moment: f64,
 }
 
 #[derive(Serialize)]
@@ -78,8 +83,65 @@ struct CriteriaReport {
 struct ContactReport {
     half_width_1: f64,
     half_width_2: f64,
-    normal_intensity_1: f64,
-    normal_intensity_2: f64,
+    /// K_N, the same at both edges; null where the two edges' differ (a moment, or an
+    /// asymmetric profile: see `normal_intensity_left_1` and the others).
+    normal_intensity_1: Option<f64>,
+    normal_intensity_2: Option<f64>,
+    left_1: f64,
+    right_1: f64,
+    left_2: f64,
+    right_2: f64,
+    normal_intensity_left_1: f64,
+    normal_intensity_right_1: f64,
+    normal_intensity_left_2: f64,
+    normal_intensity_right_2: f64,
+    rotation_1: f64,
+    rotation_2: f64,
+    /// For a flat punch with rounded edges: whether that end lies on the flat (a regime change
+    /// under a moment, not an error: the pressure there is then flat-punch-like).
+    on_flat_left_1: bool,
+    on_flat_right_1: bool,
+    on_flat_left_2: bool,
+    on_flat_right_2: bool,
+}
+
+impl ContactReport {
+    fn new(steady: &SteadyState) -> Self {
+        let [c1, c2] = [steady.contacts.first, steady.contacts.second];
+        let single = |c: &NormalContact| {
+            let k = c.normal_intensities();
+            (c.is_centred() || k.left == k.right).then_some(k.left)
+        };
+        Self {
+            half_width_1: c1.half_width(),
+            half_width_2: c2.half_width(),
+            normal_intensity_1: single(&c1),
+            normal_intensity_2: single(&c2),
+            left_1: c1.end(Edge::Left),
+            right_1: c1.end(Edge::Right),
+            left_2: c2.end(Edge::Left),
+            right_2: c2.end(Edge::Right),
+            normal_intensity_left_1: c1.normal_intensity(Edge::Left),
+            normal_intensity_right_1: c1.normal_intensity(Edge::Right),
+            normal_intensity_left_2: c2.normal_intensity(Edge::Left),
+            normal_intensity_right_2: c2.normal_intensity(Edge::Right),
+            rotation_1: c1.rotation(),
+            rotation_2: c2.rotation(),
+            on_flat_left_1: c1.end_on_flat().left,
+            on_flat_right_1: c1.end_on_flat().right,
+            on_flat_left_2: c2.end_on_flat().left,
+            on_flat_right_2: c2.end_on_flat().right,
+        }
+    }
+
+    /// Whether the contacts are centred `[-a, a]` with one K_N: the table then shows what it
+    /// always has, and a moment's rows otherwise.
+    fn centred(&self) -> bool {
+        self.normal_intensity_1.is_some()
+            && self.normal_intensity_2.is_some()
+            && self.left_1 == -self.right_1
+            && self.left_2 == -self.right_2
+    }
 }
 
 #[derive(Serialize, Clone, Copy)]
@@ -152,6 +214,8 @@ pub(crate) fn profile_report(contact: &Contact) -> ProfileReport {
     let mut r = ProfileReport {
         kind: "",
         radius: None,
+        left_radius: None,
+        right_radius: None,
         flat_half_width: None,
         coefficient: None,
         exponent: None,
@@ -161,11 +225,16 @@ pub(crate) fn profile_report(contact: &Contact) -> ProfileReport {
     match contact.profile().shape() {
         Shape::Hertz { radius } => (r.kind, r.radius) = ("hertz", Some(*radius)),
         Shape::FlatRounded {
-            flat_half_width,
-            edge_radius,
+            flat_half_width, ..
         } => {
-            (r.kind, r.radius, r.flat_half_width) =
-                ("flat-rounded", Some(*edge_radius), Some(*flat_half_width))
+            // Equal radii keep `radius`; unequal ones give left_radius and right_radius only.
+            let (left, right) = contact.profile().edge_radii().unwrap_or_default();
+            (r.kind, r.flat_half_width) = ("flat-rounded", Some(*flat_half_width));
+            if left == right {
+                r.radius = Some(left);
+            } else {
+                (r.left_radius, r.right_radius) = (Some(left), Some(right));
+            }
         }
         Shape::PowerLaw {
             coefficient,
@@ -191,6 +260,7 @@ impl SteadyReport {
             normal: p.normal(),
             shear: p.shear(),
             bulk: p.bulk(),
+            moment: p.moment(),
         };
         let c = &steady.criteria;
         let asymptotic = match (asymptotic, steady.stick_zone, steady.slip_zones) {
@@ -252,12 +322,7 @@ impl SteadyReport {
                 bulk_term: c.bulk_term,
                 friction: c.friction,
             },
-            contact: ContactReport {
-                half_width_1: steady.half_width.first,
-                half_width_2: steady.half_width.second,
-                normal_intensity_1: contact.normal_intensity(steady.half_width.first)?,
-                normal_intensity_2: contact.normal_intensity(steady.half_width.second)?,
-            },
+            contact: ContactReport::new(steady),
             stick_zone: steady.stick_zone.map(ZoneReport::from),
             slip_zones: steady.slip_zones.map(|s| Edges {
                 left: Pair {
@@ -292,6 +357,11 @@ impl SteadyReport {
         row(&mut o, "shear Q", p.first.shear, p.second.shear, &force);
         let stress = tail(Quantity::Stress);
         row(&mut o, "bulk sigma", p.first.bulk, p.second.bulk, &stress);
+        let centred = self.contact.centred();
+        if !centred {
+            let moment = tail(Quantity::Moment);
+            row(&mut o, "moment M", p.first.moment, p.second.moment, &moment);
+        }
         row(
             &mut o,
             "|Q|/P",
@@ -306,21 +376,72 @@ impl SteadyReport {
             self.contact.half_width_2,
             &tail(Quantity::Length),
         );
-        row(
-            &mut o,
-            "K_N",
-            self.contact.normal_intensity_1,
-            self.contact.normal_intensity_2,
-            &tail(Quantity::Intensity),
-        );
+        let k = &self.contact;
+        let intensity = tail(Quantity::Intensity);
+        if centred {
+            let kn = |v: Option<f64>| v.unwrap_or(f64::NAN);
+            row(
+                &mut o,
+                "K_N",
+                kn(k.normal_intensity_1),
+                kn(k.normal_intensity_2),
+                &intensity,
+            );
+        } else {
+            let length = tail(Quantity::Length);
+            row(&mut o, "contact b1", k.left_1, k.left_2, &length);
+            row(&mut o, "contact b2", k.right_1, k.right_2, &length);
+            let yes = |on: bool| if on { "yes" } else { "no" };
+            row(
+                &mut o,
+                "rotation",
+                k.rotation_1,
+                k.rotation_2,
+                "   rad (the pad's tilt: + raises the right)",
+            );
+            row(
+                &mut o,
+                "K_N left",
+                k.normal_intensity_left_1,
+                k.normal_intensity_left_2,
+                &intensity,
+            );
+            row(
+                &mut o,
+                "K_N right",
+                k.normal_intensity_right_1,
+                k.normal_intensity_right_2,
+                &intensity,
+            );
+            for (edge, at_1, at_2) in [
+                ("b1", k.on_flat_left_1, k.on_flat_left_2),
+                ("b2", k.on_flat_right_1, k.on_flat_right_2),
+            ] {
+                if at_1 || at_2 {
+                    let _ = writeln!(
+                        o,
+                        "  end {edge} on the flat: point1 {:<4} point2 {}   (flat-punch-like pressure there)",
+                        yes(at_1),
+                        yes(at_2)
+                    );
+                }
+            }
+        }
         let ratio = self
             .criteria
             .full_stick_ratio
             .map_or("infinite (dP = 0)".to_string(), |r| format!("{r:.6}"));
-        let _ = writeln!(
-            o,
-            "eq. (1): (|dQ| + pi a_max |dsigma|/4)/|dP| = {ratio}   (full stick when <= f)"
-        );
+        if centred {
+            let _ = writeln!(
+                o,
+                "eq. (1): (|dQ| + pi a_max |dsigma|/4)/|dP| = {ratio}   (full stick when <= f)"
+            );
+        } else {
+            let _ = writeln!(
+                o,
+                "eq. (1) edge by edge: max |dS|/|dP_edge| along the cycle = {ratio}   (full stick when <= f)"
+            );
+        }
         let _ = writeln!(o);
         let regime = match steady.regime {
             Regime::GrossSliding { point } => format!(
@@ -416,7 +537,7 @@ impl SteadyReport {
     /// line up; a value the case does not have (a profile parameter of another kind, the stick
     /// zone when sliding, the asymptotics outside partial slip) is an empty cell. `profile.kinks`
     /// lists the kinks space-separated.
-    pub const COLUMNS: [&'static str; 64] = [
+    pub const COLUMNS: [&'static str; 82] = [
         "regime",
         "profile.kind",
         "profile.radius",
@@ -481,6 +602,24 @@ impl SteadyReport {
         "units.force",
         "units.length",
         "units.stress",
+        "profile.left_radius",
+        "profile.right_radius",
+        "points.at_point1.moment",
+        "points.at_point2.moment",
+        "contact.left_1",
+        "contact.right_1",
+        "contact.left_2",
+        "contact.right_2",
+        "contact.normal_intensity_left_1",
+        "contact.normal_intensity_right_1",
+        "contact.normal_intensity_left_2",
+        "contact.normal_intensity_right_2",
+        "contact.rotation_1",
+        "contact.rotation_2",
+        "contact.on_flat_left_1",
+        "contact.on_flat_right_1",
+        "contact.on_flat_left_2",
+        "contact.on_flat_right_2",
     ];
 
     /// One JSON object.
@@ -501,6 +640,7 @@ impl SteadyReport {
                     (None, None) => n.to_string(),
                 },
                 Some(serde_json::Value::String(s)) => s.clone(),
+                Some(serde_json::Value::Bool(b)) => b.to_string(),
                 Some(serde_json::Value::Array(a)) => a
                     .iter()
                     .map(|x| x.as_f64().map_or_else(String::new, |x| x.to_string()))
