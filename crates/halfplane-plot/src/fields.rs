@@ -93,16 +93,21 @@ pub fn stress_map_figure(
     map: &GridMap,
     name: &str,
     step: usize,
-    half_width: f64,
+    contact: [f64; 2],
     units: &Units,
 ) -> Result<Figure, PlotError> {
     let label = format!("{name} ({})", units.stress);
     let (mut series, bar) = field_map(map, name, label, Shading::Diverging)?;
+    let [left, right] = contact;
     series.push(Series::new(
-        "contact −a ≤ x ≤ a",
+        if left == -right {
+            "contact −a ≤ x ≤ a"
+        } else {
+            "contact b1 ≤ x ≤ b2"
+        },
         Style::Line,
         3,
-        vec![(-half_width, 0.0), (half_width, 0.0)],
+        vec![(left, 0.0), (right, 0.0)],
     ));
     // Both extremes of a signed stress: the largest tension and the largest compression.
     let unit = format!(" {}", units.stress);

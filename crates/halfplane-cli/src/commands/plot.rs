@@ -293,9 +293,10 @@ fn stress_map(
         .next()
         .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
     let a = state.half_width;
+    let centre = 0.5 * (state.ends.left + state.ends.right);
     let (nx, nz) = MAP_POINTS;
     let x: Vec<f64> = (0..nx)
-        .map(|i| 1.5 * a * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
+        .map(|i| centre + 1.5 * a * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
         .collect();
     let z: Vec<f64> = (0..nz).map(|j| a * j as f64 / (nz - 1) as f64).collect();
     let (px, pz): (Vec<f64>, Vec<f64>) = z
@@ -321,7 +322,11 @@ fn stress_map(
         values: &values,
     };
     Ok(halfplane_plot::stress_map_figure(
-        &map, name, step, a, units,
+        &map,
+        name,
+        step,
+        [state.ends.left, state.ends.right],
+        units,
     )?)
 }
 
