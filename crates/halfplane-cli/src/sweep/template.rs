@@ -29,10 +29,12 @@ enum Slot {
     PoissonRatio,
     Friction,
     Radius,
+    LeftRadius,
+    RightRadius,
     FlatHalfWidth,
     Coefficient,
     Exponent,
-    /// `cycle.point{1,2}.{normal, shear, bulk}`: point 0 or 1, part 0, 1 or 2.
+    /// `cycle.point{1,2}.{normal, shear, bulk, moment}`: point 0 or 1, part 0 to 3.
     Load(usize, usize),
 }
 
@@ -43,12 +45,16 @@ fn slot(keys: &[String]) -> Option<Slot> {
         ["material", "poisson_ratio"] => Slot::PoissonRatio,
         ["friction", "coefficient"] => Slot::Friction,
         ["profile", "radius"] => Slot::Radius,
+        ["profile", "left_radius"] => Slot::LeftRadius,
+        ["profile", "right_radius"] => Slot::RightRadius,
         ["profile", "flat_half_width"] => Slot::FlatHalfWidth,
         ["profile", "coefficient"] => Slot::Coefficient,
         ["profile", "exponent"] => Slot::Exponent,
         ["cycle", point, part] => {
             let p = ["point1", "point2"].iter().position(|n| n == point)?;
-            let q = ["normal", "shear", "bulk"].iter().position(|n| n == part)?;
+            let q = ["normal", "shear", "bulk", "moment"]
+                .iter()
+                .position(|n| n == part)?;
             Slot::Load(p, q)
         }
         _ => return None,
@@ -163,8 +169,10 @@ impl Template {
         );
         let mut f = base.friction().value();
         let mut shape = base.profile().shape().clone();
+        // A flat-rounded pad's two radii (equal unless written as left_radius/right_radius).
+        let mut radii = base.profile().edge_radii();
         let (p1, p2) = cycle.as_given();
-        let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk()]);
+        let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk(), p.moment()]);
         let (mut material, mut friction, mut profile, mut points) = (false, false, false, false);
         for (slot, &v) in slots.iter().zip(values) {
             match (slot, &mut shape) {
@@ -178,7 +186,16 @@ impl Template {
                         edge_radius: radius,
                         ..
                     },
-                ) => (*radius, profile) = (v, true),
+                ) => {
+                    (*radius, profile) = (v, true);
+                    radii = radii.map(|_| (v, v));
+                }
+                (Slot::LeftRadius, Shape::FlatRounded { .. }) => {
+                    (radii, profile) = (radii.map(|(_, r)| (v, r)), true)
+                }
+                (Slot::RightRadius, Shape::FlatRounded { .. }) => {
+                    (radii, profile) = (radii.map(|(l, _)| (l, v)), true)
+                }
                 (
                     Slot::FlatHalfWidth,
                     Shape::FlatRounded {
@@ -197,6 +214,10 @@ impl Template {
                 _ => {}
             }
         }
+        let two_radii = !base.profile().is_symmetric()
+            || slots
+                .iter()
+                .any(|s| matches!(s, Slot::LeftRadius | Slot::RightRadius));
         let contact = if material || friction || profile {
             let material = match material {
                 true => Material::new(e, nu)?,
@@ -211,10 +232,16 @@ impl Template {
                 (
                     true,
                     Shape::FlatRounded {
-                        flat_half_width,
-                        edge_radius,
+                        flat_half_width, ..
                     },
-                ) => Profile::flat_rounded(flat_half_width, edge_radius)?,
+                ) => match radii {
+                    // As the case reader: two radii when the case writes two (so varies them).
+                    Some((left, right)) if two_radii => {
+                        Profile::flat_rounded_asymmetric(flat_half_width, left, right)?
+                    }
+                    Some((radius, _)) => Profile::flat_rounded(flat_half_width, radius)?,
+                    None => base.profile().clone(),
+                },
                 (
                     true,
                     Shape::PowerLaw {
@@ -232,8 +259,10 @@ impl Template {
             true => {
                 let [a, b] = loads;
                 Cycle::new(
-                    LoadPoint::new("cycle.point1", a[0], a[1], a[2])?,
-                    LoadPoint::new("cycle.point2", b[0], b[1], b[2])?,
+                    LoadPoint::new("cycle.point1", a[0], a[1], a[2])?
+                        .with_moment("cycle.point1", a[3])?,
+                    LoadPoint::new("cycle.point2", b[0], b[1], b[2])?
+                        .with_moment("cycle.point2", b[3])?,
                 )
             }
             false => cycle,
@@ -353,7 +382,7 @@ coefficient = 0.6
 {profile}
 [cycle]
 point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}
-point2 = {{ normal = 1400.0, shear = 250.0, bulk = 20.0 }}
+point2 = {{ normal = 1400.0, shear = 250.0, bulk = 20.0, moment = 0.0 }}
 [sweep]
 mode = "random"
 samples = 300
@@ -385,6 +414,10 @@ seed = 11
             (
                 "kind = \"power-law\"\ncoefficient = 0.01\nexponent = 2.5",
                 "\"profile.coefficient\" = { from = 0.001, to = 0.1, scale = \"log\" }\n\"profile.exponent\" = { from = 0.5, to = 4.0 }",
+            ),
+            (
+                "kind = \"flat-rounded\"\nflat_half_width = 0.3\nleft_radius = 40.0\nright_radius = 60.0",
+                "\"profile.left_radius\" = { from = -5.0, to = 80.0 }\n\"profile.right_radius\" = { from = 20.0, to = 90.0 }\n\"cycle.point2.moment\" = { from = -400.0, to = 400.0 }",
             ),
         ];
         for (profile, vary) in cases {
