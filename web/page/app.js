@@ -85,7 +85,8 @@ const SLIP = "#e0802a";
 
 const $ = (id) => document.getElementById(id);
 const inputs = new Map(); // dotted path -> input element
-const wasm = window.wasm_bindgen;
+// Declared by the glue (halfplane_web.js) as a global binding, not a property of window.
+const wasm = wasm_bindgen; // eslint-disable-line no-undef
 let generation = 0;
 // Sections of a linked case that the form does not write, kept as written (TOML text).
 let otherSections = "";
@@ -259,6 +260,8 @@ function caseToml() {
       lines.push(`kind = ${JSON.stringify(kind)}`);
       for (const f of PROFILE_KINDS[kind]) put(f.key, inputs.get(`profile.${kind}.${f.key}`));
     } else if (section.name === "cycle") {
+      // A case without a cycle (a linked one) stays without: every point field empty.
+      if (POINTS.every((p) => POINT_FIELDS.every((f) => inputs.get(`cycle.${p.key}.${f.key}`).value.trim() === ""))) continue;
       for (const p of POINTS) {
         const parts = [];
         for (const f of POINT_FIELDS) {
