@@ -25,7 +25,7 @@ pub const MARCH_SECONDS: f64 = 0.1;
 const TABLES: [&str; 2] = ["profile", "history"];
 
 /// Points on each contact's pressure curve ([`contact`]).
-const PRESSURE_POINTS: usize = 121;
+pub const PRESSURE_POINTS: usize = 121;
 
 /// The case of `text`, read as the command reads a case file. A table given by its `file` is an
 /// error naming that field: a page reads no files (the form loads a CSV into `data`).

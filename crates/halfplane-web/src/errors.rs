@@ -17,7 +17,7 @@ pub struct PageError {
     /// The case field it concerns (`material.youngs_modulus`, `cycle.point1.normal`, `points`),
     /// when the error names one as data.
     pub field: Option<String>,
-    /// `input`, `outside-analysis` or `solver` ([`halfplane::ErrorKind`]); `input` for errors
+    /// `input`, `outside-analysis` or `solver` ([`halfplane::error::ErrorKind`]); `input` for errors
     /// of the case file itself.
     pub kind: &'static str,
     /// The library variant's stable name ([`Error::name`]), when it is a library error.
