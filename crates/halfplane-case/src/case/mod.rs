@@ -211,8 +211,34 @@ fn reject_unused(section: &str, kind: &str, used: &[&str], given: &[(&str, bool)
     Ok(())
 }
 
+/// An error about one field of the case, which it names as the file spells it: a number missing,
+/// a count that is not a whole number in range. Its own type (its message is the text the command
+/// prints), so that a front end can show the message beside that field (the web page's form)
+/// without reading the text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FieldError {
+    /// The field, e.g. `material.youngs_modulus`.
+    pub field: String,
+    /// The whole message, which names the field.
+    pub message: String,
+}
+
+impl std::fmt::Display for FieldError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for FieldError {}
+
 fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
-    value.ok_or_else(|| anyhow!("missing field {field}: give {what}"))
+    value.ok_or_else(|| {
+        FieldError {
+            field: field.into(),
+            message: format!("missing field {field}: give {what}"),
+        }
+        .into()
+    })
 }
 
 /// Reads and resolves a case file.
