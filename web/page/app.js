@@ -7,12 +7,13 @@
 // ---------------------------------------------------------------------------------------------
 // The form: the case file's sections and fields, as the file names them.
 
-// The fields of a load point (cycle.point1, cycle.point2). Moment loading is one more entry:
-// { key: "moment", label: "moment M", unit: "moment", optional: true }.
+// The fields of a load point (cycle.point1, cycle.point2). The moment M is the pressure's moment
+// about x = 0 (its resultant acts at x = M/P); empty means 0, as in the case file.
 const POINT_FIELDS = [
   { key: "normal", label: "normal load P", unit: "force" },
   { key: "shear", label: "shear load Q", unit: "force" },
   { key: "bulk", label: "bulk tension σ", unit: "stress", optional: true },
+  { key: "moment", label: "moment M about x = 0", unit: "moment", optional: true },
 ];
 const POINTS = [
   { key: "point1", defaults: { normal: "1000.0", shear: "-250.0", bulk: "-20.0" } },
@@ -24,7 +25,9 @@ const PROFILE_KINDS = {
   "hertz": [{ key: "radius", label: "relative radius of curvature R", unit: "length", value: "50.0" }],
   "flat-rounded": [
     { key: "flat_half_width", label: "flat half-width b", unit: "length", value: "0.3" },
-    { key: "radius", label: "edge radius R", unit: "length", value: "50.0" },
+    { key: "radius", label: "edge radius R (empty when the two below are given)", unit: "length", value: "50.0", optional: true },
+    { key: "left_radius", label: "left edge radius R_L (unequal edges, with R_R)", unit: "length", value: "", optional: true },
+    { key: "right_radius", label: "right edge radius R_R (unequal edges, with R_L)", unit: "length", value: "", optional: true },
   ],
   "power-law": [
     { key: "coefficient", label: "B in g = B|x|^k", value: "0.01" },
@@ -484,7 +487,10 @@ function showSteady(answer) {
   const c = r.criteria;
   const ratio = c.full_stick_ratio === null ? "infinite (ΔP = 0)" : fmt(c.full_stick_ratio);
   $("criteria").textContent = `|Q|/P = ${fmt(c.shear_ratio_1)} at point1, ${fmt(c.shear_ratio_2)} at point2 ` +
-    `(gross sliding when ≥ f = ${c.friction}); eq. (1): (|ΔQ| + π a_max |Δσ|/4)/|ΔP| = ${ratio} ` +
+    `(gross sliding when ≥ f = ${c.friction}); ` +
+    (r.contact.left_1 !== -r.contact.right_1 || r.contact.left_2 !== -r.contact.right_2
+      ? `eq. (1) edge by edge: max |ΔS|/|ΔP_edge| along the cycle = ${ratio} `
+      : `eq. (1): (|ΔQ| + π a_max |Δσ|/4)/|ΔP| = ${ratio} `) +
     `(full stick when ≤ f).`;
   setNumber("half-width-1", r.contact.half_width_1);
   setNumber("half-width-2", r.contact.half_width_2);
@@ -630,7 +636,7 @@ function drawLoadSpace(r, map) {
   const chart = new Chart(box, {
     height: 340, x: [0, top], y: [-f * top, f * top],
     xlabel: `normal load P (${units.force})`, ylabel: `shear load Q (${units.force})`,
-    title: "Regime with point 2 moved over the load space (point 1 and σ at point 2 as given)",
+    title: "Regime with point 2 moved over the load space (point 1, σ and M/P at point 2 as given)",
   });
   const used = new Set();
   if (map) {
@@ -656,36 +662,40 @@ function drawLoadSpace(r, map) {
   legend(box, items);
 }
 
-// The contact at both ends: the pressure, and the stick and slip zones on the contact.
+// The contact at both ends: the pressure, and the stick and slip zones on the contact (its ends
+// b1, b2 move off centre under a moment).
 function drawContact(r, contact) {
   const box = $("contact");
   box.textContent = "";
   const units = unitNames(r);
   const ends = [["point1", contact.at_point1, r.points.at_point1], ["point2", contact.at_point2, r.points.at_point2]];
-  const aMax = Math.max(contact.at_point1.half_width, contact.at_point2.half_width);
+  const lo = Math.min(contact.at_point1.left, contact.at_point2.left);
+  const hi = Math.max(contact.at_point1.right, contact.at_point2.right);
+  const margin = 0.15 * 0.5 * (hi - lo);
   const pMax = Math.max(...contact.at_point1.pressure, ...contact.at_point2.pressure);
   const band = 0.16 * pMax;
   for (const [name, c, load] of ends) {
     const which = name === "point1" ? "at_point1" : "at_point2";
+    const moment = load.moment ? `, M = ${load.moment} ${units.moment}` : "";
     const chart = new Chart(box, {
-      height: 230, x: [-1.15 * aMax, 1.15 * aMax], y: [-band * 1.6, 1.1 * pMax],
+      height: 230, x: [lo - margin, hi + margin], y: [-band * 1.6, 1.1 * pMax],
       xlabel: `x (${units.length})`, ylabel: `pressure p (${units.stress})`,
-      title: `${name}: P = ${load.normal}, Q = ${load.shear} ${units.force}, σ = ${load.bulk} ${units.stress}`,
+      title: `${name}: P = ${load.normal}, Q = ${load.shear} ${units.force}, σ = ${load.bulk} ${units.stress}${moment}`,
     });
-    const a = c.half_width;
+    const [b1, b2] = [c.left, c.right];
     const slip = r.slip_zones;
     const y0 = -1.4 * band;
     const y1 = -0.3 * band;
     if (r.regime === "gross-sliding") {
-      chart.rect(-a, y0, a, y1, { fill: SLIP });
+      chart.rect(b1, y0, b2, y1, { fill: SLIP });
     } else if (r.regime === "full-stick") {
-      chart.rect(-a, y0, a, y1, { fill: STICK });
+      chart.rect(b1, y0, b2, y1, { fill: STICK });
     } else {
-      const left = -a + slip.left[which];
-      const right = a - slip.right[which];
-      chart.rect(-a, y0, left, y1, { fill: SLIP });
+      const left = b1 + slip.left[which];
+      const right = b2 - slip.right[which];
+      chart.rect(b1, y0, left, y1, { fill: SLIP });
       chart.rect(left, y0, right, y1, { fill: STICK });
-      chart.rect(right, y0, a, y1, { fill: SLIP });
+      chart.rect(right, y0, b2, y1, { fill: SLIP });
     }
     chart.line([[chart.x[0], 0], [chart.x[1], 0]], { stroke: "#8a939c" });
     chart.line(c.x.map((x, i) => [x, c.pressure[i]]), { stroke: "#1d232b", "stroke-width": 2 });
@@ -699,11 +709,16 @@ function drawEvolution(ev, marched) {
   box.textContent = "";
   const rows = ev ? ev.points : [];
   const t = (p) => (p.half === 1 ? p.fraction : 1 + p.fraction);
-  let aMax = Math.max(0, ...rows.map((p) => p.half_width));
-  if (marched) aMax = Math.max(aMax, ...marched.map(([, l, r]) => Math.max(-l, r)));
+  let lo = Math.min(0, ...rows.map((p) => p.contact_left));
+  let hi = Math.max(0, ...rows.map((p) => p.contact_right));
+  if (marched) {
+    lo = Math.min(lo, ...marched.map(([, l]) => l));
+    hi = Math.max(hi, ...marched.map(([, , r]) => r));
+  }
+  const margin = 0.15 * 0.5 * (hi - lo);
   const length = ev ? ev.units.length : (inputs.get("units.length").value.trim() || "mm");
   const chart = new Chart(box, {
-    height: 320, x: [0, 2], y: [-1.15 * aMax, 1.15 * aMax],
+    height: 320, x: [0, 2], y: [lo - margin, hi + margin],
     xlabel: "time: half 1 (point1 → point2) from 0 to 1, half 2 (back) from 1 to 2",
     ylabel: `x (${length})`, title: "Contact, stick and slip zones along the steady cycle",
   });
@@ -711,16 +726,16 @@ function drawEvolution(ev, marched) {
   if (rows.length) {
     for (const half of [1, 2]) {
       const h = rows.filter((p) => p.half === half);
-      chart.polygon([...h.map((p) => [t(p), p.half_width]), ...h.slice().reverse().map((p) => [t(p), -p.half_width])], { fill: "#f7d9b5" });
+      chart.polygon([...h.map((p) => [t(p), p.contact_right]), ...h.slice().reverse().map((p) => [t(p), p.contact_left])], { fill: "#f7d9b5" });
       chart.polygon([...h.map((p) => [t(p), p.stick_right]), ...h.slice().reverse().map((p) => [t(p), p.stick_left])], { fill: "#cfe9d7" });
-      chart.line(h.map((p) => [t(p), p.half_width]), { stroke: "#1d232b", "stroke-width": 1.5 });
-      chart.line(h.map((p) => [t(p), -p.half_width]), { stroke: "#1d232b", "stroke-width": 1.5 });
+      chart.line(h.map((p) => [t(p), p.contact_right]), { stroke: "#1d232b", "stroke-width": 1.5 });
+      chart.line(h.map((p) => [t(p), p.contact_left]), { stroke: "#1d232b", "stroke-width": 1.5 });
       chart.line(h.map((p) => [t(p), p.stick_left]), { stroke: "#2e8b57", "stroke-width": 2 });
       chart.line(h.map((p) => [t(p), p.stick_right]), { stroke: "#2e8b57", "stroke-width": 2 });
       chart.line(h.map((p) => [t(p), p.asymptotic_stick_left]), { stroke: "#6b4fa0", "stroke-dasharray": "5 3" });
       chart.line(h.map((p) => [t(p), p.asymptotic_stick_right]), { stroke: "#6b4fa0", "stroke-dasharray": "5 3" });
     }
-    items.push(["contact edges ±a", "#1d232b", "line"], ["stick zone (exact)", "#2e8b57", "line"],
+    items.push(["contact edges", "#1d232b", "line"], ["stick zone (exact)", "#2e8b57", "line"],
       ["asymptotic estimate", "#6b4fa0", "dash"], ["stick", "#cfe9d7", "fill"], ["slip", "#f7d9b5", "fill"]);
   }
   if (marched) {

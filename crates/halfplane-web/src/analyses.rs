@@ -8,7 +8,7 @@
 use anyhow::{anyhow, bail, Result};
 use halfplane::march;
 use halfplane::record::MarchedCycle;
-use halfplane::{asymptotic, evolution, steady, Cycle, LoadPoint, Regime, SteadyOptions};
+use halfplane::{asymptotic, evolution, steady, Cycle, Edge, LoadPoint, Regime, SteadyOptions};
 use halfplane_case::case::{self, Case, FieldError};
 use halfplane_case::limits;
 use halfplane_case::report::evolve::EvolveReport;
@@ -94,24 +94,35 @@ pub fn evolve(text: &str, points: &str) -> Result<Value> {
     }))
 }
 
-/// The pressure at both ends of the cycle as given: for each, the contact half-width `a`, and
+/// The pressure at both ends of the cycle as given: for each, the contact half-width `a`, its
+/// ends `left` and `right` (b1, b2: `-a` and `a` without a moment on a symmetric profile), and
 /// `x` and `pressure` at [`PRESSURE_POINTS`] points across the contact.
 pub fn contact(text: &str) -> Result<Value> {
     let case = parse(text)?;
     let cycle = case.cycle()?;
     let (first, second) = cycle.as_given();
     let mut ends = Vec::new();
-    for point in [first, second] {
-        let a = case.contact.half_width(point.normal())?;
+    for (point, name) in [(first, "cycle.point1"), (second, "cycle.point2")] {
+        let state = case
+            .contact
+            .contact_at(&point)
+            .map_err(|e| e.with_moment_field(&format!("{name}.moment")))?;
+        let (left, right) = (state.end(Edge::Left), state.end(Edge::Right));
         let n = PRESSURE_POINTS - 1;
         let x: Vec<f64> = (0..=n)
-            .map(|i| a * (2.0 * i as f64 / n as f64 - 1.0))
+            .map(|i| left + (right - left) * i as f64 / n as f64)
             .collect();
         let pressure = x
             .iter()
-            .map(|&x| case.contact.pressure(a, x))
+            .map(|&x| case.contact.pressure_at(&state, x))
             .collect::<halfplane::Result<Vec<f64>>>()?;
-        ends.push(json!({ "half_width": a, "x": x, "pressure": pressure }));
+        ends.push(json!({
+            "half_width": state.half_width(),
+            "left": left,
+            "right": right,
+            "x": x,
+            "pressure": pressure,
+        }));
     }
     Ok(json!({ "at_point1": ends[0], "at_point2": ends[1] }))
 }
@@ -126,8 +137,8 @@ pub const REGIMES: [&str; 5] = [
 ];
 
 /// The regime the steady analysis finds with point 2 moved to each cell of a `columns` x `rows`
-/// grid over the load space (P from 0 to 1.25 max(P1, P2), Q from -f to f times that), point 1
-/// and point 2's bulk tension as given: `codes` (row after row, Q rising, each an index into
+/// grid over the load space (P from 0 to 1.25 max(P1, P2), Q from -f to f times that), point 1,
+/// point 2's bulk tension and its centroid M/P as given (its moment scales with P): `codes` (row after row, Q rising, each an index into
 /// `regimes`; an error of kind outside-analysis or solver is a regime of its own), with the
 /// grid's `normal` and `shear` cell edges.
 pub fn regime_map(text: &str, columns: usize, rows: usize) -> Result<Value> {
@@ -151,7 +162,8 @@ pub fn regime_map(text: &str, columns: usize, rows: usize) -> Result<Value> {
         let q = 0.5 * (shear[j] + shear[j + 1]);
         for i in 0..columns {
             let p = 0.5 * (normal[i] + normal[i + 1]);
-            let moved = LoadPoint::new("point2", p, q, second.bulk())?;
+            let moved = LoadPoint::new("point2", p, q, second.bulk())?
+                .with_moment("point2", second.centroid() * p)?;
             let regime = match steady::analyse(&case.contact, &Cycle::new(first, moved), &options) {
                 Ok(s) => match s.regime {
                     Regime::PartialSlip => "partial-slip",
