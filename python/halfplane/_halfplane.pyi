@@ -125,4 +125,5 @@ def match_report(
     poisson_ratio: Optional[float] = None,
     friction: Optional[float] = None,
     exact: bool = False,
+    edge: Optional[str] = None,
 ) -> Tuple[Dict[str, Any], Case, str, List[str]]: ...

@@ -126,3 +126,17 @@ def test_a_moment_outside_a_table_is_an_input_error_naming_the_point():
     with pytest.raises(halfplane.HalfplaneError) as error:
         halfplane.steady(case)
     assert "cycle.point2.moment" in str(error.value) and "900" in str(error.value)
+
+
+def test_match_takes_the_chosen_edge():
+    case = halfplane.read_case(DOVETAIL)
+    results = {
+        edge: halfplane.match(case, "hertz", radius=80.0, edge=edge)
+        for edge in ("left", "right")
+    }
+    for edge, result in results.items():
+        assert result.matched_edge == edge
+    left, right = results["left"], results["right"]
+    assert left.normal_intensity.at_point1.test != right.normal_intensity.at_point1.test
+    with pytest.raises(halfplane.InputError, match="edge"):
+        halfplane.match(case, "hertz", radius=80.0, edge="middle")

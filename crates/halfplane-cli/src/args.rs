@@ -449,6 +449,20 @@ pub struct TestArgs {
     /// both points, the asymptotic match).
     #[arg(long)]
     pub exact: bool,
+    /// Under a moment (or on an asymmetric prototype) K_N differs at the prototype's two edges,
+    /// and a test without a moment has one: the edge whose K_N the test takes (default: the
+    /// edge whose K_T changes more over the cycle).
+    #[arg(long, value_enum)]
+    pub edge: Option<MatchEdge>,
+}
+
+/// A prototype's edge, for `--edge`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MatchEdge {
+    /// The edge at smaller x (b1).
+    Left,
+    /// The edge at larger x (b2).
+    Right,
 }
 
 impl TestArgs {
@@ -468,6 +482,10 @@ impl TestArgs {
             poisson_ratio: self.poisson_ratio,
             friction: self.friction,
             exact: self.exact,
+            edge: self.edge.map(|e| match e {
+                MatchEdge::Left => halfplane::Edge::Left,
+                MatchEdge::Right => halfplane::Edge::Right,
+            }),
         }
     }
 }

@@ -302,3 +302,68 @@ fn the_edge_test_under_a_moment_is_where_marching_stops_slipping_at_the_start_of
         }
     }
 }
+
+#[test]
+fn matching_takes_the_chosen_edges_intensity_and_a_moved_hertz_contact_matches_as_centred() {
+    use halfplane::matching::{match_cycle, match_cycle_at, Mode};
+    let hertz = contact(Profile::hertz(RADIUS).unwrap());
+    let test = contact(Profile::hertz(80.0).unwrap());
+    // A Hertz prototype under a constant centroid is the centred one moved: whichever edge is
+    // matched, the test (without a moment) is the centred prototype's test, to rounding.
+    let plain = theory_cycle();
+    let (p1, p2) = plain.as_given();
+    let moved = Cycle::new(
+        with_moment(p1, 0.2 * p1.normal()),
+        with_moment(p2, 0.2 * p2.normal()),
+    );
+    let reference = match_cycle(&hertz, &plain, &test, Mode::Asymptotic).unwrap();
+    for edge in Edge::BOTH {
+        let m = match_cycle_at(&hertz, &moved, &test, Mode::Asymptotic, Some(edge)).unwrap();
+        let (a, b) = (m.test.cycle.as_given(), reference.test.cycle.as_given());
+        for (x, y) in [(a.0, b.0), (a.1, b.1)] {
+            close(x.normal(), y.normal(), y.normal(), "matched P");
+            close(x.shear(), y.shear(), y.normal(), "matched Q");
+            close(x.bulk(), y.bulk(), y.bulk().abs().max(1.0), "matched sigma");
+        }
+    }
+    // The dovetail-like pad: K_N differs at its edges; the test takes the chosen edge's, and K_T
+    // at both edges still match.
+    let pad = contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap());
+    let cycle = Cycle::new(
+        with_moment(point(1000.0, -250.0, -20.0), 60.0),
+        with_moment(point(1400.0, 250.0, 20.0), 150.0),
+    );
+    let mut tests = Vec::new();
+    for edge in Edge::BOTH {
+        let m = match_cycle_at(&pad, &cycle, &test, Mode::Asymptotic, Some(edge)).unwrap();
+        assert_eq!(m.prototype.edge, edge);
+        for p in GivenPoint::BOTH {
+            let k = m.prototype.edges[p].contact.normal_intensity(edge);
+            close(
+                m.normal_intensity[p].test,
+                k,
+                k,
+                "matched K_N at the chosen edge",
+            );
+            for e in Edge::BOTH {
+                let c = m.shear_intensity[e][p];
+                close(c.test, c.prototype, c.prototype.abs(), "K_T at both edges");
+            }
+        }
+        tests.push(m.test.cycle.as_given().1.normal());
+    }
+    // The two edges' K_N differ, so the two tests differ.
+    assert!((tests[0] - tests[1]).abs() > 1e-3 * tests[0], "{tests:?}");
+    // By default, the edge whose K_T changes more.
+    let m = match_cycle(&pad, &cycle, &test, Mode::Asymptotic).unwrap();
+    let range = |e: Edge| {
+        (m.prototype.edges.second.shear_intensity[e] - m.prototype.edges.first.shear_intensity[e])
+            .abs()
+    };
+    let larger = if range(Edge::Left) >= range(Edge::Right) {
+        Edge::Left
+    } else {
+        Edge::Right
+    };
+    assert_eq!(m.prototype.edge, larger);
+}
