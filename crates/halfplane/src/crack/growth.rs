@@ -310,8 +310,8 @@ pub fn analyse(
 }
 
 /// Every length over the kept increments (thresholds left at 0 for the caller). The uncracked
-/// stress of an increment is evaluated at the collocation points of all lengths in one call, so
-/// the stress route's set-up is paid once per increment rather than once per length.
+/// stress is evaluated at the collocation points of all lengths under every increment in one
+/// call ([`stress::fields`]: the logarithms of a point and a cell are taken once for the cycle).
 fn length_rows(
     mouth: f64,
     lengths: &[f64],
@@ -330,8 +330,11 @@ fn length_rows(
     let z: Vec<f64> = solvers.iter().flat_map(|s| s.z().iter().copied()).collect();
     let mut loads: Vec<Vec<(Vec<f64>, Vec<f64>)>> =
         vec![Vec::with_capacity(states.len()); solvers.len()];
-    for st in states {
-        let f = stress::field(&st.traction, st.load.bulk(), &contact.material, &x, &z)?;
+    let increments: Vec<(&stress::Traction, f64)> = states
+        .iter()
+        .map(|st| (&st.traction, st.load.bulk()))
+        .collect();
+    for f in stress::fields(&increments, &contact.material, &x, &z)? {
         let mut i = 0;
         for (solver, l) in solvers.iter().zip(&mut loads) {
             let (normal, shear): (Vec<f64>, Vec<f64>) = (i..i + solver.x().len())
