@@ -66,7 +66,8 @@ pub const MAX_LENGTHS: usize = 1000;
 impl CrackOptions {
     /// Cracks at `position`, `angle_degrees` from the surface normal (strictly between -90 and
     /// 90), of the `lengths` given (each > 0, strictly ascending, 1 to [`MAX_LENGTHS`]), with
-    /// faces of friction coefficient `face_friction >= 0`. 40 quadrature points, MTS range.
+    /// faces of friction coefficient `face_friction >= 0`. [`default_points`] quadrature points,
+    /// MTS range.
     pub fn new(
         position: Position,
         angle_degrees: f64,
@@ -108,7 +109,7 @@ impl CrackOptions {
             angle,
             lengths,
             face_friction,
-            points: 40,
+            points: default_points(angle_degrees),
             effective: EffectiveRange::Mts,
         })
     }
@@ -136,6 +137,19 @@ impl CrackOptions {
     /// The lengths.
     pub fn lengths(&self) -> &[f64] {
         &self.lengths
+    }
+}
+
+/// The quadrature points per component a crack at `angle_degrees` from the surface normal takes
+/// unless told: 40 to 45 degrees, 80 to 60 degrees, 160 beyond. The crack's mouth makes a wedge of
+/// `90 - |angle|` degrees with the surface, and the sharper it is the more slowly the solution
+/// converges (`docs/convergence.md`): under remote tension these give `F_I` within 0.05% at 45
+/// degrees, 0.4% at 60 and 0.5% at 75 of the 400-point values.
+pub fn default_points(angle_degrees: f64) -> usize {
+    match angle_degrees.abs() {
+        a if a <= 45.0 => 40,
+        a if a <= 60.0 => 80,
+        _ => 160,
     }
 }
 
