@@ -298,6 +298,58 @@ mod under_the_contact {
     }
 
     #[test]
+    fn critical_plane_angle_lies_in_the_plane_of_largest_swt() {
+        // A mouth in the trailing slip zone (x = -0.7, a = 0.761), where the surface shear
+        // traction tilts the principal planes. The crack must lie in the plane on which
+        // SWT = sigma_n,max d(eps_n)/2 (plane strain, elastic) is largest: computed here from the
+        // mouth's stress history on every plane (0.1 degree apart), independently of the
+        // fatigue module's search (0.05 degree refinement).
+        let c = constants();
+        let h = history(300.0, 60.0, 20);
+        let contact = reference::hertz();
+        let opts = CrackOptions::new(Position::At(-0.7), 0.0, vec![0.01], 0.0)
+            .unwrap()
+            .with_critical_plane(halfplane::fatigue::Parameter::Swt)
+            .unwrap();
+        let r = crack::analyse(&contact, &h, &options(), &c, &opts).unwrap();
+        let theta = r.angle.to_radians();
+        let spc = h.cycles().unwrap().steps_per_cycle();
+        let last = h.loads().len();
+        let steps: Vec<usize> = (last + 1 - spc..=last).collect();
+        let kept = halfplane::stress::marched(&contact, &h, &options(), &steps).unwrap();
+        let m = contact.material();
+        let nu = m.poisson_ratio();
+        let history: Vec<_> = kept
+            .iter()
+            .map(|k| halfplane::stress::at(&k.traction, k.load.bulk(), &m, -0.7, 0.0).unwrap())
+            .collect();
+        let swt = |beta: f64| {
+            let (s, co) = beta.sin_cos();
+            let (mut smax, mut emin, mut emax) = (f64::MIN, f64::MAX, f64::MIN);
+            for st in &history {
+                let sn = st.sxx * co * co + st.szz * s * s + 2.0 * st.sxz * co * s;
+                let en =
+                    ((1.0 + nu) * sn - nu * (1.0 + nu) * (st.sxx + st.szz)) / m.youngs_modulus();
+                smax = smax.max(sn);
+                emin = emin.min(en);
+                emax = emax.max(en);
+            }
+            smax * (emax - emin) / 2.0
+        };
+        // The crack's normal n = (cos theta, -sin theta): the plane normal at -theta from +x.
+        let on_crack = swt(-theta);
+        let best = (0..1800)
+            .map(|i| swt((i as f64 * 0.1).to_radians()))
+            .fold(f64::MIN, f64::max);
+        println!(
+            "angle {:.3} degrees, SWT on the crack {on_crack:.6e}, best {best:.6e}",
+            r.angle
+        );
+        assert!(on_crack >= best * (1.0 - 1e-6), "{on_crack} {best}");
+        assert!(r.angle.abs() > 1.0, "the tilt is not trivial: {}", r.angle);
+    }
+
+    #[test]
     fn the_example_cycle_and_its_verdict() {
         let lengths: Vec<f64> = (0..12).map(|i| 0.002 * 1.6f64.powi(i)).collect();
         let opts = CrackOptions::new(Position::LargerRange, 0.0, lengths, 0.0).unwrap();

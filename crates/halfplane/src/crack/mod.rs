@@ -29,7 +29,8 @@ mod solve;
 pub use contact::{FaceState, IncrementSolution};
 pub use growth::{
     analyse, default_points, el_haddad_length, mts_equivalent, threshold, CrackOptions,
-    CrackResult, CrackRow, EffectiveRange, Position, Verdict, MAX_LENGTHS, MAX_LENGTH_RATIO,
+    CrackResult, CrackRow, EffectiveRange, Position, Verdict, CRITICAL_PLANE_PARAMETERS,
+    MAX_LENGTHS, MAX_LENGTH_RATIO,
 };
 pub use solve::{CrackSolver, TipFactors, MAX_POINTS, MIN_POINTS};
 
