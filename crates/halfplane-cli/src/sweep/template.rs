@@ -17,6 +17,7 @@ use super::spec::{Analysis, Spec, Varied};
 use crate::case::{self, Case};
 use anyhow::{bail, Result};
 use halfplane::batch::{self, MarchSummary, SteadySummary};
+use halfplane::crack::Verdict;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, Shape, SteadyOptions};
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -63,9 +64,20 @@ pub struct Outcome {
     pub steady: Option<SteadySummary>,
     /// The march (march sweeps only; absent when it failed).
     pub march: Option<MarchSummary>,
+    /// The crack's verdict (crack sweeps only; absent when it failed).
+    pub crack: Option<CrackSummary>,
     /// Empty when the row succeeded; otherwise the error (in a march sweep, prefixed by the
     /// analysis that failed, `steady:` or `march:`, joined by `; `).
     pub error: String,
+}
+
+/// A crack analysis in the two values a crack-arrest map needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrackSummary {
+    /// `arrests`, `propagates` or `no-growth`.
+    pub verdict: Verdict,
+    /// The arrest length when it arrests.
+    pub arrest_length: Option<f64>,
 }
 
 /// The resolved case of a sweep and how each row's case is made from it.
@@ -94,11 +106,16 @@ impl Template {
             Analysis::March => {
                 base.march_history()?;
             }
+            Analysis::Crack => {
+                base.crack()?;
+                base.fatigue()?;
+                base.history()?;
+            }
             _ => {}
         }
         let slots: Option<Vec<Slot>> = match spec.analysis {
             Analysis::Steady => spec.varied.iter().map(|v| slot(&v.keys)).collect(),
-            Analysis::March => None,
+            Analysis::March | Analysis::Crack => None,
         };
         let direct = slots.zip(base.cycle);
         Ok(Self {
@@ -136,6 +153,7 @@ impl Template {
                     Ok(summary) => Outcome {
                         steady: Some(summary),
                         march: None,
+                        crack: None,
                         error: String::new(),
                     },
                     Err(e) => failed(e.to_string()),
@@ -261,6 +279,7 @@ impl Template {
                 Some(Ok(summary)) => Outcome {
                     steady: Some(summary),
                     march: None,
+                    crack: None,
                     error: String::new(),
                 },
                 Some(Err(e)) => failed(e.to_string()),
@@ -296,6 +315,32 @@ impl Template {
                 Outcome {
                     steady,
                     march,
+                    crack: None,
+                    error: errors.join("; "),
+                }
+            }
+            Analysis::Crack => {
+                let mut errors = Vec::new();
+                let steady = match steady {
+                    Some(Ok(s)) => Some(s),
+                    Some(Err(e)) => {
+                        errors.push(format!("steady: {e}"));
+                        None
+                    }
+                    None => None,
+                };
+                let crack = crack_summary(case);
+                let crack = match crack {
+                    Ok(c) => Some(c),
+                    Err(e) => {
+                        errors.push(format!("crack: {e:#}"));
+                        None
+                    }
+                };
+                Outcome {
+                    steady,
+                    march: None,
+                    crack,
                     error: errors.join("; "),
                 }
             }
@@ -303,10 +348,24 @@ impl Template {
     }
 }
 
+/// `halfplane crack` on a case read for the row: its verdict and arrest length.
+fn crack_summary(case: &Case) -> Result<CrackSummary> {
+    let options = case.crack()?;
+    let constants = case.fatigue()?.constants;
+    let history = case.history()?;
+    let result =
+        halfplane::crack::analyse(&case.contact, &history, &case.solver, &constants, &options)?;
+    Ok(CrackSummary {
+        verdict: result.verdict,
+        arrest_length: result.arrest_length,
+    })
+}
+
 fn failed(error: String) -> Outcome {
     Outcome {
         steady: None,
         march: None,
+        crack: None,
         error,
     }
 }
