@@ -255,6 +255,9 @@ pub enum PlotCommand {
     /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
     /// [history]).
     SurfaceProfiles(SurfaceProfilesArgs),
+    /// A crack's stress intensity ranges against its length with the short-crack threshold
+    /// (log-log), beside the sxx map with the crack drawn (needs what `halfplane crack` needs).
+    Crack(SurfaceProfilesArgs),
     /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
     /// filled-contour map of any numeric column with a colour bar (takes the sweep's output, not a
     /// case).
