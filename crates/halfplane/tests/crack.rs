@@ -500,3 +500,67 @@ mod inclined {
         }
     }
 }
+
+mod nowell_hills {
+    use halfplane::crack::{reference, Crack, CrackSolver, FaceState, EDGE_CRACK_FACTOR};
+    use halfplane::history::{History, Ramp};
+    use halfplane::march::MarchOptions;
+    use halfplane::stress::closed_form::NowellHills;
+    use halfplane::{reference as contacts, stress, LoadPoint};
+    use std::f64::consts::PI;
+
+    #[test]
+    fn trailing_edge_cracks_under_the_published_partial_slip_field() {
+        // The crack example's cycle at its peak (P = 1000, Q = 300, sigma = 60, f = 0.6): the
+        // steady traction there is Nowell and Hills' monotonic partial-slip traction (1987), whose
+        // stress field is published in closed form (stress::closed_form::NowellHills). A crack
+        // normal to the surface at the trailing edge x = -a, open there: K_I of the whole chain
+        // (march, stress, dislocations) against the weight function over the closed-form sxx,
+        // within 0.5% (the weight function's own 0.06-0.22% and the march's trailing-edge stress,
+        // -1.3e-3 p0 at 400 cells). As the crack shortens K_I/(sqrt(pi l)) tends to 1.1215 times
+        // the closed form's trailing-edge peak, slowly (printed: the stress falls steeply below
+        // the edge).
+        let h = History::in_phase(
+            LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
+            LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
+            2,
+            30,
+            Ramp::NormalFirst,
+            10,
+        )
+        .unwrap();
+        let contact = contacts::hertz();
+        let material = contact.material();
+        let options = MarchOptions::default().with_cells(400).unwrap();
+        let peak = h.loads().len() - 30; // the end of the last rising half: point 2
+        let kept = stress::marched(&contact, &h, &options, &[peak]).unwrap();
+        assert!((kept[0].load.shear() - 300.0).abs() < 1e-9);
+        let a = kept[0].half_width;
+        let nh = NowellHills::hertz(a, 0.6, 1000.0, 300.0, 60.0);
+        let increments = [(&kept[0].traction, kept[0].load.bulk())];
+        println!("| l (mm) | K_I here | K_I closed form + weight function | difference |");
+        for l in [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2] {
+            let s = CrackSolver::new(&Crack::new(-a, 0.0, l).unwrap(), &material, 40).unwrap();
+            let f = &stress::fields(&increments, &material, s.x(), s.z()).unwrap()[0];
+            let (normal, shear): (Vec<f64>, Vec<f64>) = (0..f.len())
+                .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
+                .unzip();
+            let out = &s.cycle(&[(normal, shear)], 0.0).unwrap()[0];
+            assert!(out.states.iter().all(|s| *s == FaceState::Open), "{l}");
+            let k1 = out.factors.k1;
+            let expect: f64 = reference::edge_crack_weights(l, 64)
+                .unwrap()
+                .iter()
+                .map(|(z, w)| w * nh.stress(-a, *z)[0])
+                .sum();
+            println!(
+                "| {l} | {k1:.3} | {expect:.3} | {:+.3}% |",
+                100.0 * (k1 / expect - 1.0)
+            );
+            assert!((k1 / expect - 1.0).abs() < 5e-3, "{l}: {k1} {expect}");
+            // The steep gradient at the edge: the short-crack limit is approached slowly.
+            let limit = EDGE_CRACK_FACTOR * nh.trailing_edge_peak() * (PI * l).sqrt();
+            println!("  K_I / (1.1215 sxx(-a, 0) sqrt(pi l)) = {:.4}", k1 / limit);
+        }
+    }
+}

@@ -32,6 +32,7 @@ pub use growth::{
     CrackResult, CrackRow, EffectiveRange, Position, Verdict, CRITICAL_PLANE_PARAMETERS,
     MAX_LENGTHS, MAX_LENGTH_RATIO,
 };
+pub use reference::EDGE_CRACK_FACTOR;
 pub use solve::{CrackSolver, TipFactors, MAX_POINTS, MIN_POINTS};
 
 use crate::error::{physical, Error, Result};
