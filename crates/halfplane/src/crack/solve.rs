@@ -267,12 +267,16 @@ impl Lu {
                 }
                 piv.swap(p, c);
             }
-            for r in c + 1..n {
-                let f = a[r * n + c] / pivot;
-                a[r * n + c] = f;
+            // Rows below the pivot row, each updated from the pivot row's tail (slices, so the
+            // update is a vector loop without bounds checks).
+            let (upper, lower) = a.split_at_mut((c + 1) * n);
+            let pivot_row = &upper[c * n + c + 1..(c + 1) * n];
+            for row in lower.chunks_exact_mut(n) {
+                let f = row[c] / pivot;
+                row[c] = f;
                 if f != 0.0 {
-                    for k in c + 1..n {
-                        a[r * n + k] -= f * a[c * n + k];
+                    for (x, p) in row[c + 1..].iter_mut().zip(pivot_row) {
+                        *x -= f * p;
                     }
                 }
             }
@@ -285,11 +289,13 @@ impl Lu {
         let n = self.n;
         let mut x: Vec<f64> = self.piv.iter().map(|&p| b[p]).collect();
         for r in 0..n {
-            let s: f64 = (0..r).map(|k| self.lu[r * n + k] * x[k]).sum();
+            let row = &self.lu[r * n..r * n + r];
+            let s: f64 = row.iter().zip(&x[..r]).map(|(a, b)| a * b).sum();
             x[r] -= s;
         }
         for r in (0..n).rev() {
-            let s: f64 = (r + 1..n).map(|k| self.lu[r * n + k] * x[k]).sum();
+            let row = &self.lu[r * n + r + 1..(r + 1) * n];
+            let s: f64 = row.iter().zip(&x[r + 1..]).map(|(a, b)| a * b).sum();
             x[r] = (x[r] - s) / self.lu[r * n + r];
         }
         b.copy_from_slice(&x);
