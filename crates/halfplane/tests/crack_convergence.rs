@@ -86,7 +86,7 @@ fn crack_ranges_converge_in_points_cells_and_steps_separately() {
             previous = Some(r);
         }
         report(&changes);
-        assert!(changes[3] < 2e-3, "{changes:?}");
+        assert!(changes[3] < 5e-3, "{changes:?}");
     }
     println!("\ncells, at 40 points and 60 increments per half");
     let mut previous: Option<Vec<CrackRow>> = None;
@@ -101,19 +101,23 @@ fn crack_ranges_converge_in_points_cells_and_steps_separately() {
     }
     report(&changes);
     assert!(changes[2] < 1e-2, "{changes:?}");
-    println!("\nincrements per half-cycle, at 400 cells and 40 points");
-    let mut previous: Option<Vec<CrackRow>> = None;
-    let mut changes = Vec::new();
-    for steps in [15, 30, 60, 120] {
-        let r = rows(400, steps, 40, 0.0);
-        line(format!("{steps} per half"), &r);
-        if let Some(p) = &previous {
-            changes.push(change(&r, p));
+    for friction in [0.0, 0.3] {
+        println!(
+            "\nface friction {friction}: increments per half-cycle, at 400 cells and 40 points"
+        );
+        let mut previous: Option<Vec<CrackRow>> = None;
+        let mut changes = Vec::new();
+        for steps in [15, 30, 60, 120] {
+            let r = rows(400, steps, 40, friction);
+            line(format!("{steps} per half"), &r);
+            if let Some(p) = &previous {
+                changes.push(change(&r, p));
+            }
+            previous = Some(r);
         }
-        previous = Some(r);
+        report(&changes);
+        assert!(changes[2] < 1e-2, "{changes:?}");
     }
-    report(&changes);
-    assert!(changes[2] < 1e-2, "{changes:?}");
 }
 
 #[test]

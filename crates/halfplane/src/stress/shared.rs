@@ -222,24 +222,24 @@ impl Accumulators {
     }
 
     /// Adds one node's terms for every load: kinks `kp`, `kq` times `[a, b, lr, li]` (module
-    /// doc). Separate loops over contiguous slices, so that each is a vector update.
+    /// doc). One loop over equal-length slices (no bounds checks), so that it is a vector update.
     #[inline]
     fn add(&mut self, kp: &[f64], kq: &[f64], [a, b, lr, li]: [f64; 4]) {
-        for (k, (o1, o2)) in kp.iter().zip(self.fp_re.iter_mut().zip(&mut self.fp_im)) {
-            *o1 += k * a;
-            *o2 += k * b;
-        }
-        for (k, (o1, o2)) in kq.iter().zip(self.fq_re.iter_mut().zip(&mut self.fq_im)) {
-            *o1 += k * a;
-            *o2 += k * b;
-        }
-        for (k, (o1, o2)) in kp.iter().zip(self.dp_re.iter_mut().zip(&mut self.dp_im)) {
-            *o1 += k * lr;
-            *o2 += k * li;
-        }
-        for (k, (o1, o2)) in kq.iter().zip(self.dq_re.iter_mut().zip(&mut self.dq_im)) {
-            *o1 += k * lr;
-            *o2 += k * li;
+        let m = kp.len();
+        let (kq, fr, fi) = (&kq[..m], &mut self.fp_re[..m], &mut self.fp_im[..m]);
+        let (qr, qi) = (&mut self.fq_re[..m], &mut self.fq_im[..m]);
+        let (dr, di) = (&mut self.dp_re[..m], &mut self.dp_im[..m]);
+        let (er, ei) = (&mut self.dq_re[..m], &mut self.dq_im[..m]);
+        for k in 0..m {
+            let (p, q) = (kp[k], kq[k]);
+            fr[k] += p * a;
+            fi[k] += p * b;
+            qr[k] += q * a;
+            qi[k] += q * b;
+            dr[k] += p * lr;
+            di[k] += p * li;
+            er[k] += q * lr;
+            ei[k] += q * li;
         }
     }
 }
