@@ -7,29 +7,14 @@
 use divan::black_box;
 use halfplane::crack::{self, CrackOptions, CrackSolver, Position};
 use halfplane::fatigue::FatigueConstants;
-use halfplane::history::{History, Ramp};
-use halfplane::march::MarchOptions;
-use halfplane::{reference, stress, LoadPoint};
+use halfplane::{reference, stress};
+
+#[path = "support/crack_cases.rs"]
+mod crack_cases;
+use crack_cases::{history, loads, options};
 
 fn main() {
     divan::main();
-}
-
-/// The fatigue example's cycle with 60 increments per half: 120 per cycle.
-fn history() -> History {
-    History::in_phase(
-        LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
-        LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
-        2,
-        60,
-        Ramp::NormalFirst,
-        10,
-    )
-    .unwrap()
-}
-
-fn options() -> MarchOptions {
-    MarchOptions::default().with_cells(400).unwrap()
 }
 
 /// One length (0.05 mm at the trailing edge) over the 120 kept increments, frictionless faces and
@@ -47,16 +32,7 @@ fn one_length_120_increments(b: divan::Bencher, friction: f64) {
         kept.iter().map(|k| (&k.traction, k.load.bulk())).collect();
     b.bench(|| {
         let s = CrackSolver::new(&c, &contact.material(), 40).unwrap();
-        let loads: Vec<(Vec<f64>, Vec<f64>)> =
-            stress::fields(&increments, &contact.material(), s.x(), s.z())
-                .unwrap()
-                .iter()
-                .map(|f| {
-                    (0..f.len())
-                        .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
-                        .unzip()
-                })
-                .collect();
+        let loads = loads(&s, &increments, &contact.material());
         black_box(s.cycle(&loads, friction).unwrap())
     });
 }

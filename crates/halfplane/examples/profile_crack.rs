@@ -1,31 +1,21 @@
 //! Runs the crack benchmark's cases once, for profiling and for timing the stages:
-//! `valgrind --tool=callgrind target/release/examples/profile_crack [one|curve] [FRICTION]`
-//! (`one`: one 0.05 mm length at the trailing edge over the 120-increment cycle, `curve`: the
-//! 30-length analysis with the march), or `profile_crack stages` to print each stage's time.
+//! `valgrind --tool=callgrind target/release/examples/profile_crack [stages|curve] [FRICTION]`
+//! (`stages`: one 0.05 mm length at the trailing edge over the 120-increment cycle, each stage
+//! timed; `curve`: the 30-length analysis with the march).
 use halfplane::crack::{self, Crack, CrackOptions, CrackSolver, Position};
 use halfplane::fatigue::FatigueConstants;
-use halfplane::history::{History, Ramp};
-use halfplane::march::MarchOptions;
-use halfplane::{reference, stress, LoadPoint};
+use halfplane::{reference, stress};
 use std::time::Instant;
 
-fn history() -> History {
-    History::in_phase(
-        LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
-        LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
-        2,
-        60,
-        Ramp::NormalFirst,
-        10,
-    )
-    .unwrap()
-}
+#[path = "../benches/support/crack_cases.rs"]
+mod crack_cases;
+use crack_cases::{history, loads, options};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let what = args.get(1).map(String::as_str).unwrap_or("stages");
     let friction: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(0.0);
-    let options = MarchOptions::default().with_cells(400).unwrap();
+    let options = options();
     let contact = reference::hertz();
     let h = history();
     if what == "curve" {
@@ -51,15 +41,7 @@ fn main() {
     let t = Instant::now();
     let increments: Vec<(&stress::Traction, f64)> =
         kept.iter().map(|k| (&k.traction, k.load.bulk())).collect();
-    let fields = stress::fields(&increments, &contact.material(), s.x(), s.z()).unwrap();
-    let loads: Vec<(Vec<f64>, Vec<f64>)> = fields
-        .iter()
-        .map(|f| {
-            (0..f.len())
-                .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
-                .unzip()
-        })
-        .collect();
+    let loads = loads(&s, &increments, &contact.material());
     let loading = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let out = s.cycle(&loads, friction).unwrap();

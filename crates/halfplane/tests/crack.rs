@@ -220,7 +220,8 @@ mod under_the_contact {
     use halfplane::{reference, LoadPoint};
     use std::f64::consts::PI;
 
-    fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
+    /// The crack example's cycle: P = 1000 with Q and the bulk tension in phase to (q, bulk).
+    pub fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
         History::in_phase(
             LoadPoint::new("point1", 1000.0, -q, -bulk).unwrap(),
             LoadPoint::new("point2", 1000.0, q, bulk).unwrap(),
@@ -376,9 +377,8 @@ mod under_the_contact {
 
 mod weight_function {
     use halfplane::crack::{reference, Crack, CrackSolver, FaceState};
-    use halfplane::history::{History, Ramp};
     use halfplane::march::MarchOptions;
-    use halfplane::{reference as contacts, stress, LoadPoint};
+    use halfplane::{reference as contacts, stress};
 
     #[test]
     fn an_open_crack_under_the_contact_stress_against_the_weight_function() {
@@ -388,15 +388,7 @@ mod weight_function {
         // crack), and K_I must equal the weight-function integral of the uncracked sxx along the
         // crack line (Hartranft-Sih/Tada, crack::reference) within 0.5%: the weight function's own
         // accuracy is 0.06-0.22% on polynomial loads.
-        let h = History::in_phase(
-            LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
-            LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
-            2,
-            30,
-            Ramp::NormalFirst,
-            10,
-        )
-        .unwrap();
+        let h = super::under_the_contact::history(300.0, 60.0, 30);
         let contact = contacts::hertz();
         let material = contact.material();
         let options = MarchOptions::default().with_cells(400).unwrap();
@@ -503,10 +495,9 @@ mod inclined {
 
 mod nowell_hills {
     use halfplane::crack::{reference, Crack, CrackSolver, FaceState, EDGE_CRACK_FACTOR};
-    use halfplane::history::{History, Ramp};
     use halfplane::march::MarchOptions;
     use halfplane::stress::closed_form::NowellHills;
-    use halfplane::{reference as contacts, stress, LoadPoint};
+    use halfplane::{reference as contacts, stress};
     use std::f64::consts::PI;
 
     #[test]
@@ -520,15 +511,7 @@ mod nowell_hills {
         // -1.3e-3 p0 at 400 cells). As the crack shortens K_I/(sqrt(pi l)) tends to 1.1215 times
         // the closed form's trailing-edge peak, slowly (printed: the stress falls steeply below
         // the edge).
-        let h = History::in_phase(
-            LoadPoint::new("point1", 1000.0, -300.0, -60.0).unwrap(),
-            LoadPoint::new("point2", 1000.0, 300.0, 60.0).unwrap(),
-            2,
-            30,
-            Ramp::NormalFirst,
-            10,
-        )
-        .unwrap();
+        let h = super::under_the_contact::history(300.0, 60.0, 30);
         let contact = contacts::hertz();
         let material = contact.material();
         let options = MarchOptions::default().with_cells(400).unwrap();

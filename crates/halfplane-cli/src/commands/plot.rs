@@ -340,11 +340,26 @@ fn map_field(
     state: &stress::MarchedTraction,
 ) -> Result<(Vec<f64>, Vec<f64>, stress::StressField, f64)> {
     let a = state.half_width;
+    let (x, z, field) = grid_field(contact, state, 0.0, 1.5 * a, a)?;
+    Ok((x, z, field, a))
+}
+
+/// The stresses of a marched increment on the map's grid: `x` from `centre - half` to
+/// `centre + half`, `z` from 0 to `depth`; the grid's x and z and the field row after row.
+fn grid_field(
+    contact: &Contact,
+    state: &stress::MarchedTraction,
+    centre: f64,
+    half: f64,
+    depth: f64,
+) -> Result<(Vec<f64>, Vec<f64>, stress::StressField)> {
     let (nx, nz) = MAP_POINTS;
     let x: Vec<f64> = (0..nx)
-        .map(|i| 1.5 * a * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
+        .map(|i| centre + half * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
         .collect();
-    let z: Vec<f64> = (0..nz).map(|j| a * j as f64 / (nz - 1) as f64).collect();
+    let z: Vec<f64> = (0..nz)
+        .map(|j| depth * j as f64 / (nz - 1) as f64)
+        .collect();
     let (px, pz): (Vec<f64>, Vec<f64>) = z
         .iter()
         .flat_map(|&z| x.iter().map(move |&x| (x, z)))
@@ -356,7 +371,7 @@ fn map_field(
         &px,
         &pz,
     )?;
-    Ok((x, z, field, a))
+    Ok((x, z, field))
 }
 
 /// The crack figure: the analysis of `halfplane crack`, and the `sxx` map at the increment where
@@ -388,22 +403,7 @@ fn crack_figure(
     // The map around the crack: 1.5 crack lengths to either side of the mouth and below it (at
     // least a fifth of the contact half-width), so that the stress the crack crosses shows.
     let span = 1.5 * longest.length.max(0.2 * state.half_width);
-    let (nx, nz) = MAP_POINTS;
-    let x: Vec<f64> = (0..nx)
-        .map(|i| result.mouth + span * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
-        .collect();
-    let z: Vec<f64> = (0..nz).map(|j| span * j as f64 / (nz - 1) as f64).collect();
-    let (px, pz): (Vec<f64>, Vec<f64>) = z
-        .iter()
-        .flat_map(|&z| x.iter().map(move |&x| (x, z)))
-        .unzip();
-    let field = stress::field(
-        &state.traction,
-        state.load.bulk(),
-        &contact.material(),
-        &px,
-        &pz,
-    )?;
+    let (x, z, field) = grid_field(contact, &state, result.mouth, span, span)?;
     let map = GridMap {
         x: &x,
         z: &z,

@@ -288,14 +288,7 @@ impl Template {
             },
             Analysis::March => {
                 let mut errors = Vec::new();
-                let steady = match steady {
-                    Some(Ok(s)) => Some(s),
-                    Some(Err(e)) => {
-                        errors.push(format!("steady: {e}"));
-                        None
-                    }
-                    None => None,
-                };
+                let steady = kept(steady, &mut errors);
                 let march = case.march_history().and_then(|(history, until)| {
                     Ok(batch::march_summary(
                         &case.contact,
@@ -321,14 +314,7 @@ impl Template {
             }
             Analysis::Crack => {
                 let mut errors = Vec::new();
-                let steady = match steady {
-                    Some(Ok(s)) => Some(s),
-                    Some(Err(e)) => {
-                        errors.push(format!("steady: {e}"));
-                        None
-                    }
-                    None => None,
-                };
+                let steady = kept(steady, &mut errors);
                 let crack = crack_summary(case);
                 let crack = match crack {
                     Ok(c) => Some(c),
@@ -344,6 +330,21 @@ impl Template {
                     error: errors.join("; "),
                 }
             }
+        }
+    }
+}
+
+/// The steady summary of a march or crack row, its error (if any) added to `errors` as
+/// `steady: ...`.
+fn kept(
+    steady: Option<halfplane::Result<SteadySummary>>,
+    errors: &mut Vec<String>,
+) -> Option<SteadySummary> {
+    match steady? {
+        Ok(s) => Some(s),
+        Err(e) => {
+            errors.push(format!("steady: {e}"));
+            None
         }
     }
 }
