@@ -511,8 +511,9 @@ pub struct DesignMapArgs {
     /// Column on the y axis (a varied path).
     #[arg(long)]
     pub y: String,
-    /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
-    /// slip_right_1 (filled contours with a colour bar).
+    /// Column that colours the map: regime (a regime map), crack.verdict (a crack-arrest map of
+    /// a crack sweep) or any numeric column, e.g. slip_right_1 (filled contours with a colour
+    /// bar).
     #[arg(long, default_value = "regime")]
     pub color: String,
     /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show

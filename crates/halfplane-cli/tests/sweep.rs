@@ -284,6 +284,54 @@ fn a_crack_sweep_records_verdict_and_arrest_length_as_the_crack_command() {
     assert_eq!(verdicts, ["propagates", "arrests"]);
 }
 
+#[cfg(feature = "plot")] // draws a figure
+#[test]
+fn a_crack_arrest_map_colours_the_verdicts() {
+    // A crack sweep over two paths drawn by its verdict (categories, as regimes) and its arrest
+    // length (a number; rows that do not arrest have none).
+    let base = std::fs::read_to_string(example("crack.toml"))
+        .unwrap()
+        .replace("cells = 400", "cells = 100")
+        .replace("steps_per_half = 30", "steps_per_half = 10")
+        .replace("count = 20", "count = 6");
+    let dir = scratch("sweep-crack-map");
+    let spec = format!(
+        "{base}[sweep]\nmode = \"grid\"\nanalysis = \"crack\"\n[sweep.vary]\n\"fatigue.threshold\" = [100.0, 260.0]\n\"crack.face_friction\" = [0.0, 0.5]\n"
+    );
+    sweep(&dir, &spec, "map.csv", &[]);
+    let csv = dir.join("map.csv");
+    let svg = dir.join("map.svg");
+    let args = |color: &str| {
+        vec![
+            "plot".to_string(),
+            "design-map".into(),
+            csv.to_str().unwrap().into(),
+            "-o".into(),
+            svg.to_str().unwrap().into(),
+            "--x".into(),
+            "fatigue.threshold".into(),
+            "--y".into(),
+            "crack.face_friction".into(),
+            "--color".into(),
+            color.into(),
+        ]
+    };
+    let a = args("crack.verdict");
+    let o = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("propagates") && text.contains("arrests"),
+        "legend"
+    );
+    let a = args("crack.arrest_length");
+    let o = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&svg)
+        .unwrap()
+        .contains("crack arrest length (mm)"));
+}
+
 #[test]
 fn a_march_sweep_runs_cycles_steady_as_the_march_command_does() {
     // cycles = "steady": each row marches until its cycle repeats and says how many it took.
