@@ -17,6 +17,7 @@ __all__ = [
     "__version__",
     "_case_from_state",
     "_error_examples",
+    "crack_report",
     "evolve_report",
     "fatigue_report",
     "march_report",
@@ -114,6 +115,9 @@ def stress_points(
 def fatigue_report(
     case: Case, cells: Optional[int] = None
 ) -> Tuple[Dict[str, Any], List[str]]: ...
+def crack_report(
+    case: Case, cells: Optional[int] = None, overrides: Optional[Mapping[str, Any]] = None
+) -> Dict[str, Any]: ...
 def match_report(
     case: Case,
     profile: str,

@@ -255,6 +255,9 @@ pub enum PlotCommand {
     /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
     /// [history]).
     SurfaceProfiles(SurfaceProfilesArgs),
+    /// A crack's stress intensity ranges against its length with the short-crack threshold
+    /// (log-log), beside the sxx map with the crack drawn (needs what `halfplane crack` needs).
+    Crack(SurfaceProfilesArgs),
     /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
     /// filled-contour map of any numeric column with a colour bar (takes the sweep's output, not a
     /// case).
@@ -526,8 +529,9 @@ pub struct DesignMapArgs {
     /// Column on the y axis (a varied path).
     #[arg(long)]
     pub y: String,
-    /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
-    /// slip_right_1 (filled contours with a colour bar).
+    /// Column that colours the map: regime (a regime map), crack.verdict (a crack-arrest map of
+    /// a crack sweep) or any numeric column, e.g. slip_right_1 (filled contours with a colour
+    /// bar).
     #[arg(long, default_value = "regime")]
     pub color: String,
     /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show

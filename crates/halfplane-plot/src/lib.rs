@@ -1,7 +1,8 @@
 //! Figures for halfplane, drawn from the same numbers the library computes: the paper's load-space,
 //! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
 //! fields and zones, filled maps of the stresses and fatigue parameters below the contact with
-//! the surface profiles of the cycle, and design maps of a sweep's rows ([`design_map_figure`]).
+//! the surface profiles of the cycle, a crack's stress intensity ranges against its length
+//! ([`crack_figure`]), and design maps of a sweep's rows ([`design_map_figure`]).
 //! SVG or PNG by file name, rendered in pure Rust with a bundled font. Maps are filled contours
 //! with a colour bar ([`ColorBar`]), numbers in plain notation ([`number`]).
 //!
@@ -12,6 +13,7 @@
 //! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
 mod contour;
+mod crack;
 mod fields;
 mod format;
 mod map;
@@ -20,6 +22,7 @@ mod render;
 mod shading;
 
 pub use contour::{contour_segments, filled_contours, levels, FilledContours, GridMap};
+pub use crack::{crack_figure, crack_growth_panel};
 pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
 pub use format::{level_labels, number};
 pub use map::{design_map_figure, DesignMap, MapColor};
@@ -149,6 +152,7 @@ pub fn load_space_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: "P–Q trajectory".into(),
             x_label: format!("normal load P ({force})"),
             y_label: format!("shear load Q ({force})"),
@@ -158,6 +162,7 @@ pub fn load_space_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: "P–S trajectories of the edges".into(),
             x_label: format!("normal load P ({force})"),
             y_label: format!("equivalent shear S ({force})"),
@@ -197,6 +202,7 @@ fn moment_panel(
         legend: Legend::Auto,
         color_bar: None,
         equal_aspect: false,
+        log_axes: false,
         title: "Moment: centroid and contact ends".into(),
         x_label: format!("normal load P ({})", units.force_per_length),
         y_label: format!("position x ({})", units.length),
@@ -242,6 +248,7 @@ pub fn slip_map_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: format!("f = {}", panel.friction),
             x_label: "ΔQ/(f P0)".into(),
             y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
@@ -337,6 +344,7 @@ pub fn evolution_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: match (right, centred) {
                 (true, true) => "right edge: a and n".into(),
                 (false, true) => "left edge: −a and −m".into(),
@@ -393,6 +401,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "shear traction".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("traction q ({})", units.stress),
@@ -402,6 +411,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "accumulated slip".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("slip ({})", units.length),
@@ -440,6 +450,7 @@ pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: "stick zones (filled); slip between them and the contact edges".into(),
             x_label: "increment".into(),
             y_label: format!("position x ({})", units.length),

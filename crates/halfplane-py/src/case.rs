@@ -90,7 +90,7 @@ impl PyCase {
 }
 
 /// A Python value as a TOML value (numbers, strings, booleans, lists and dicts).
-fn to_toml(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
+pub(crate) fn to_toml(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
     if value.is_instance_of::<PyBool>() {
         return Ok(toml::Value::Boolean(value.extract()?));
     }

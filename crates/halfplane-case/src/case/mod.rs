@@ -192,6 +192,20 @@ impl Case {
         crack::resolve(self.crack.as_ref())
     }
 
+    /// `[crack]` with the fields of `overrides` put in (added, or replacing those written),
+    /// resolved and checked exactly as the section itself (Python's `halfplane.crack`).
+    pub fn crack_with(&self, overrides: &toml::Table) -> Result<halfplane::crack::CrackOptions> {
+        let mut table = self.crack.clone().unwrap_or_default();
+        if overrides.contains_key("angle") {
+            // A new angle replaces the critical-plane choice written with the old one.
+            table.remove("initiation_parameter");
+        }
+        for (k, v) in overrides {
+            table.insert(k.clone(), v.clone());
+        }
+        crack::resolve(Some(&table))
+    }
+
     /// The cycle, or an error saying the `[cycle]` section is needed.
     pub fn cycle(&self) -> Result<Cycle> {
         self.cycle.ok_or_else(|| anyhow!("missing section [cycle]: give point1 and point2, e.g. point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}"))

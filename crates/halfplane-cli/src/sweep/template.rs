@@ -17,6 +17,7 @@ use super::spec::{Analysis, Spec, Varied};
 use crate::case::{self, Case};
 use anyhow::{bail, Result};
 use halfplane::batch::{self, MarchSummary, SteadySummary};
+use halfplane::crack::Verdict;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, Shape, SteadyOptions};
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -69,9 +70,20 @@ pub struct Outcome {
     pub steady: Option<SteadySummary>,
     /// The march (march sweeps only; absent when it failed).
     pub march: Option<MarchSummary>,
+    /// The crack's verdict (crack sweeps only; absent when it failed).
+    pub crack: Option<CrackSummary>,
     /// Empty when the row succeeded; otherwise the error (in a march sweep, prefixed by the
     /// analysis that failed, `steady:` or `march:`, joined by `; `).
     pub error: String,
+}
+
+/// A crack analysis in the two values a crack-arrest map needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrackSummary {
+    /// `arrests`, `propagates` or `no-growth`.
+    pub verdict: Verdict,
+    /// The arrest length when it arrests.
+    pub arrest_length: Option<f64>,
 }
 
 /// The resolved case of a sweep and how each row's case is made from it.
@@ -100,11 +112,16 @@ impl Template {
             Analysis::March => {
                 base.march_history()?;
             }
+            Analysis::Crack => {
+                base.crack()?;
+                base.fatigue()?;
+                base.history()?;
+            }
             _ => {}
         }
         let slots: Option<Vec<Slot>> = match spec.analysis {
             Analysis::Steady => spec.varied.iter().map(|v| slot(&v.keys)).collect(),
-            Analysis::March => None,
+            Analysis::March | Analysis::Crack => None,
         };
         let direct = slots.zip(base.cycle);
         Ok(Self {
@@ -142,6 +159,7 @@ impl Template {
                     Ok(summary) => Outcome {
                         steady: Some(summary),
                         march: None,
+                        crack: None,
                         error: String::new(),
                     },
                     Err(e) => failed(e.to_string()),
@@ -290,6 +308,7 @@ impl Template {
                 Some(Ok(summary)) => Outcome {
                     steady: Some(summary),
                     march: None,
+                    crack: None,
                     error: String::new(),
                 },
                 Some(Err(e)) => failed(e.to_string()),
@@ -298,14 +317,7 @@ impl Template {
             },
             Analysis::March => {
                 let mut errors = Vec::new();
-                let steady = match steady {
-                    Some(Ok(s)) => Some(s),
-                    Some(Err(e)) => {
-                        errors.push(format!("steady: {e}"));
-                        None
-                    }
-                    None => None,
-                };
+                let steady = kept(steady, &mut errors);
                 let march = case.march_history().and_then(|(history, until)| {
                     Ok(batch::march_summary(
                         &case.contact,
@@ -325,6 +337,25 @@ impl Template {
                 Outcome {
                     steady,
                     march,
+                    crack: None,
+                    error: errors.join("; "),
+                }
+            }
+            Analysis::Crack => {
+                let mut errors = Vec::new();
+                let steady = kept(steady, &mut errors);
+                let crack = crack_summary(case);
+                let crack = match crack {
+                    Ok(c) => Some(c),
+                    Err(e) => {
+                        errors.push(format!("crack: {e:#}"));
+                        None
+                    }
+                };
+                Outcome {
+                    steady,
+                    march: None,
+                    crack,
                     error: errors.join("; "),
                 }
             }
@@ -332,10 +363,39 @@ impl Template {
     }
 }
 
+/// The steady summary of a march or crack row, its error (if any) added to `errors` as
+/// `steady: ...`.
+fn kept(
+    steady: Option<halfplane::Result<SteadySummary>>,
+    errors: &mut Vec<String>,
+) -> Option<SteadySummary> {
+    match steady? {
+        Ok(s) => Some(s),
+        Err(e) => {
+            errors.push(format!("steady: {e}"));
+            None
+        }
+    }
+}
+
+/// `halfplane crack` on a case read for the row: its verdict and arrest length.
+fn crack_summary(case: &Case) -> Result<CrackSummary> {
+    let options = case.crack()?;
+    let constants = case.fatigue()?.constants;
+    let history = case.history()?;
+    let result =
+        halfplane::crack::analyse(&case.contact, &history, &case.solver, &constants, &options)?;
+    Ok(CrackSummary {
+        verdict: result.verdict,
+        arrest_length: result.arrest_length,
+    })
+}
+
 fn failed(error: String) -> Outcome {
     Outcome {
         steady: None,
         march: None,
+        crack: None,
         error,
     }
 }

@@ -23,13 +23,16 @@ mod contact;
 mod growth;
 mod kernel;
 mod quadrature;
+pub mod reference;
 mod solve;
 
 pub use contact::{FaceState, IncrementSolution};
 pub use growth::{
-    analyse, el_haddad_length, mts_equivalent, threshold, CrackOptions, CrackResult, CrackRow,
-    EffectiveRange, Position, Verdict, MAX_LENGTHS, MAX_LENGTH_RATIO,
+    analyse, default_points, el_haddad_length, mts_equivalent, threshold, CrackOptions,
+    CrackResult, CrackRow, EffectiveRange, Position, Verdict, CRITICAL_PLANE_PARAMETERS,
+    MAX_LENGTHS, MAX_LENGTH_RATIO,
 };
+pub use reference::EDGE_CRACK_FACTOR;
 pub use solve::{CrackSolver, TipFactors, MAX_POINTS, MIN_POINTS};
 
 use crate::error::{physical, Error, Result};
