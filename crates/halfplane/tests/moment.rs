@@ -367,3 +367,145 @@ fn matching_takes_the_chosen_edges_intensity_and_a_moved_hertz_contact_matches_a
     };
     assert_eq!(m.prototype.edge, larger);
 }
+
+#[test]
+fn marched_stresses_under_a_moment_have_the_contacts_pressure_at_the_surface() {
+    // An off-centre contact (a punch with unequal radii under P and M, pressed alone): the
+    // stress field built from the march's traction has szz = -p(x) at the surface, with p the
+    // normal problem's own pressure (`Contact::pressure_at`), so the traction's node form carries
+    // the moved ends. At every cell centre inside the contact, just below the surface (1e-9 of the
+    // contact's size), to 1e-6 of the peak pressure.
+    use halfplane::stress;
+    let c = contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap());
+    let load = with_moment(point(1200.0, 0.0, 0.0), 150.0);
+    let history = History::from_moment_rows(&[[1200.0, 0.0, 0.0, 150.0]]).unwrap();
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let kept = stress::marched(&c, &history, &options, &[1]).unwrap();
+    let state = c.contact_at(&load).unwrap();
+    assert_eq!(kept[0].ends, state.ends());
+    let r = march(&c, &history, &options, |_, _| {}).unwrap();
+    let x: Vec<f64> =
+        r.x.iter()
+            .copied()
+            .filter(|&x| x > state.end(Edge::Left) && x < state.end(Edge::Right))
+            .collect();
+    let z = vec![1e-9 * state.half_width(); x.len()];
+    let field = stress::field(&kept[0].traction, 0.0, &c.material(), &x, &z).unwrap();
+    let peak = x
+        .iter()
+        .map(|&x| c.pressure_at(&state, x).unwrap())
+        .fold(0.0, f64::max);
+    for (i, &xi) in x.iter().enumerate() {
+        let p = c.pressure_at(&state, xi).unwrap();
+        assert!(
+            (field.szz[i] + p).abs() <= 1e-6 * peak,
+            "x = {xi}: szz {} against -p {}",
+            field.szz[i],
+            -p
+        );
+    }
+}
+
+#[test]
+fn a_crack_at_the_edge_of_a_moved_hertz_contact_is_the_centred_ones() {
+    // Hertz under a constant centroid e0 is the centred contact moved by e0: the crack at its
+    // right edge sees the same stress as the centred contact's, so K_I and K_II agree within the
+    // marching discretisation (the two grids differ: the moved contact's is spanned from its own
+    // ends, 200 cells either way, so 1% of the range is the bound).
+    use halfplane::crack::{self, CrackOptions, Position};
+    use halfplane::fatigue::FatigueConstants;
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let constants = FatigueConstants::default()
+        .with_threshold(160.0)
+        .and_then(|k| k.with_endurance_range(700.0))
+        .unwrap();
+    let e0 = 0.25;
+    let history = |m: f64| {
+        History::in_phase(
+            with_moment(point(1000.0, -300.0, -60.0), m * 1000.0),
+            with_moment(point(1000.0, 300.0, 60.0), m * 1000.0),
+            2,
+            20,
+            Ramp::NormalFirst,
+            10,
+        )
+        .unwrap()
+    };
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let crack = CrackOptions::new(Position::RightEdge, 0.0, vec![0.05], 0.0).unwrap();
+    let centred = crack::analyse(&c, &history(0.0), &options, &constants, &crack).unwrap();
+    let moved = crack::analyse(&c, &history(e0), &options, &constants, &crack).unwrap();
+    close(
+        moved.mouth,
+        centred.mouth + e0,
+        1.0,
+        "the mouth moves with the contact",
+    );
+    let (a, b) = (&moved.rows[0], &centred.rows[0]);
+    for (x, y, what) in [
+        (a.delta_k1, b.delta_k1, "dK_I"),
+        (a.delta_k2, b.delta_k2, "dK_II"),
+    ] {
+        assert!(
+            (x - y).abs() <= 1e-2 * y.abs().max(1.0),
+            "{what}: moved {x} against centred {y}"
+        );
+    }
+}
+
+#[test]
+fn fatigue_maxima_of_a_moved_hertz_contact_are_the_centred_ones_moved() {
+    // As for the crack: Hertz under a constant centroid e0 is the centred contact moved by e0.
+    // The fatigue grid is centred on the cycle's contacts, so its points move with them; every
+    // parameter's maximum must agree within the marching discretisation (the grids of the two
+    // marches differ: 1% of each value), at the same depth, e0 further along x.
+    use halfplane::fatigue::{self, FatigueConstants, FatigueGrid};
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let constants = FatigueConstants::default()
+        .with_fatigue_strength(1800.0)
+        .and_then(|k| k.with_fatigue_strength_exponent(-0.1))
+        .and_then(|k| k.with_fatigue_ductility(0.5))
+        .and_then(|k| k.with_fatigue_ductility_exponent(-0.6))
+        .and_then(|k| k.with_shear_fatigue_strength(1000.0))
+        .and_then(|k| k.with_shear_fatigue_ductility(0.8))
+        .and_then(|k| k.with_findley_k(0.25))
+        .and_then(|k| k.with_yield_stress(900.0))
+        .unwrap();
+    let e0 = -0.15;
+    let history = |m: f64| {
+        History::in_phase(
+            with_moment(point(1000.0, -300.0, -40.0), m * 1000.0),
+            with_moment(point(1000.0, 300.0, 40.0), m * 1000.0),
+            2,
+            20,
+            Ramp::NormalFirst,
+            10,
+        )
+        .unwrap()
+    };
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let grid = FatigueGrid::new(21, 6, 1.5, 0.5).unwrap();
+    let a = fatigue::analyse(&c, &history(0.0), &options, &constants, &grid).unwrap();
+    let b = fatigue::analyse(&c, &history(e0), &options, &constants, &grid).unwrap();
+    close(b.grid_x[10], a.grid_x[10] + e0, 1.0, "the grid's centre");
+    assert_eq!(a.parameters.len(), b.parameters.len());
+    let step = a.grid_x[1] - a.grid_x[0];
+    for (p, m) in a.parameters.iter().zip(&b.parameters) {
+        assert_eq!(p.parameter, m.parameter);
+        assert!(
+            (p.value - m.value).abs() <= 1e-2 * p.value.abs(),
+            "{}: centred {} against moved {}",
+            p.parameter.name(),
+            p.value,
+            m.value
+        );
+        assert!(
+            (m.x - (p.x + e0)).abs() <= step + 1e-12 && (m.z - p.z).abs() <= 1e-12,
+            "{}: at x = {}, z = {} against {} moved",
+            p.parameter.name(),
+            m.x,
+            m.z,
+            p.x
+        );
+    }
+}

@@ -29,9 +29,10 @@ pub const MAX_LENGTH_RATIO: f64 = 1.0;
 /// Where the crack's mouth is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Position {
-    /// At `x = -a_max` (the largest half-width of the steady cycle).
+    /// At the leftmost position of the contact's left end over the steady cycle (`x = -a_max`,
+    /// with `a_max` its largest half-width, without a moment on a symmetric profile).
     LeftEdge,
-    /// At `x = a_max`.
+    /// At the rightmost position of its right end (`x = a_max` when centred).
     RightEdge,
     /// Of the two edges, the one with the larger effective range at the shortest length.
     LargerRange,
@@ -313,6 +314,16 @@ pub fn analyse(
     let steps: Vec<usize> = (start + 1..=start + spc).collect();
     let states = stress::marched(contact, history, options, &steps)?;
     let a_max = states.iter().map(|s| s.half_width).fold(0.0, f64::max);
+    // The contact's outermost ends over the cycle: -a_max and a_max when centred; under a
+    // moment the ends move on their own.
+    let left_end = states
+        .iter()
+        .map(|s| s.ends.left)
+        .fold(f64::INFINITY, f64::min);
+    let right_end = states
+        .iter()
+        .map(|s| s.ends.right)
+        .fold(f64::NEG_INFINITY, f64::max);
     let longest = *crack.lengths.last().unwrap_or(&0.0);
     if longest > MAX_LENGTH_RATIO * a_max {
         return Err(Error::InvalidInput {
@@ -338,17 +349,17 @@ pub fn analyse(
         Ok((angle, rows))
     };
     let mouth = match crack.position {
-        Position::LeftEdge => -a_max,
-        Position::RightEdge => a_max,
+        Position::LeftEdge => left_end,
+        Position::RightEdge => right_end,
         Position::At(x) => x,
         Position::LargerRange => {
             let first = &crack.lengths[..1];
-            let left = run(-a_max, first)?.1[0].delta_k_eff;
-            let right = run(a_max, first)?.1[0].delta_k_eff;
+            let left = run(left_end, first)?.1[0].delta_k_eff;
+            let right = run(right_end, first)?.1[0].delta_k_eff;
             if right > left {
-                a_max
+                right_end
             } else {
-                -a_max
+                left_end
             }
         }
     };
