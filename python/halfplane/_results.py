@@ -82,26 +82,25 @@ class ContactState(Record):
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> ContactState:
-        ends = [
-            "left_1",
-            "right_1",
-            "left_2",
-            "right_2",
-            "normal_intensity_left_1",
-            "normal_intensity_right_1",
-            "normal_intensity_left_2",
-            "normal_intensity_right_2",
-            "rotation_1",
-            "rotation_2",
-        ]
-        flags = ["on_flat_left_1", "on_flat_right_1", "on_flat_left_2", "on_flat_right_2"]
         return cls(
-            _float(data["half_width_1"]),
-            _float(data["half_width_2"]),
-            _opt_float(data["normal_intensity_1"]),
-            _opt_float(data["normal_intensity_2"]),
-            *(_float(data[k]) for k in ends),
-            *(bool(data[k]) for k in flags),
+            half_width_1=_float(data["half_width_1"]),
+            half_width_2=_float(data["half_width_2"]),
+            normal_intensity_1=_opt_float(data["normal_intensity_1"]),
+            normal_intensity_2=_opt_float(data["normal_intensity_2"]),
+            left_1=_float(data["left_1"]),
+            right_1=_float(data["right_1"]),
+            left_2=_float(data["left_2"]),
+            right_2=_float(data["right_2"]),
+            normal_intensity_left_1=_float(data["normal_intensity_left_1"]),
+            normal_intensity_right_1=_float(data["normal_intensity_right_1"]),
+            normal_intensity_left_2=_float(data["normal_intensity_left_2"]),
+            normal_intensity_right_2=_float(data["normal_intensity_right_2"]),
+            rotation_1=_float(data["rotation_1"]),
+            rotation_2=_float(data["rotation_2"]),
+            on_flat_left_1=bool(data["on_flat_left_1"]),
+            on_flat_right_1=bool(data["on_flat_right_1"]),
+            on_flat_left_2=bool(data["on_flat_left_2"]),
+            on_flat_right_2=bool(data["on_flat_right_2"]),
         )
 
 

@@ -269,8 +269,10 @@ def evolution(
         if marched is not None:
             ax.plot(marched[0], marched[2] if side > 0 else marched[1], "o", ms=3.5, color="C2",
                     label="stick boundary (time marching)", zorder=1)
-        ax.plot(t, side * floats(frame, "half_width"), "-", color="0.25", lw=1.6,
-                label="contact edge")
+        # The contact's own ends (they move apart from ±a under a moment); ±a for an older frame.
+        edge = "contact_right" if side > 0 else "contact_left"
+        ends = floats(frame, edge) if edge in frame else side * floats(frame, "half_width")
+        ax.plot(t, ends, "-", color="0.25", lw=1.6, label="contact edge")
         ax.plot(t, floats(frame, column), "-", color="C0", lw=1.8,
                 label="stick boundary (exact)")
         ax.plot(t, floats(frame, "asymptotic_" + column), "--", color="C1", lw=1.5,

@@ -50,6 +50,7 @@ struct PointOut {
     normal: f64,
     shear: f64,
     bulk: f64,
+    moment: f64,
 }
 
 #[derive(Serialize, Clone, Copy)]
@@ -100,6 +101,7 @@ fn side(s: &Side) -> SideOut {
         normal: p.normal(),
         shear: p.shear(),
         bulk: p.bulk(),
+        moment: p.moment(),
     };
     SideOut {
         regime: s.steady.regime.as_str(),
