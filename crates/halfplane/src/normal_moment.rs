@@ -337,36 +337,15 @@ impl Contact {
         moment: f64,
         near: &NormalContact,
     ) -> Result<NormalContact> {
-        self.contact_from(normal, moment, near.centre(), near.half_width())
+        self.contact_from(normal, moment, (near.centre(), near.half_width()), 1e-15)
     }
 
-    /// [`Contact::contact_near`] from a guessed contact `(c, a)` (a > 0) instead of a solved one:
-    /// a prediction along a load path.
+    /// [`Contact::contact_near`] from a guessed contact `(c, a)` (a > 0, a prediction along a
+    /// load path) instead of a solved one, to the relative step `tolerance` (at least 1e-15, the
+    /// solve to rounding; 1e-10 suits contacts that only bound a quantity along a path, far
+    /// inside the bound's own margin). The bracketed solve (to rounding) when Newton does not
+    /// settle.
     pub(crate) fn contact_from(
-        &self,
-        normal: f64,
-        moment: f64,
-        c: f64,
-        a: f64,
-    ) -> Result<NormalContact> {
-        if let Some(found) = self.closed_form_contact(normal, moment)? {
-            return Ok(found);
-        }
-        physical_positive("normal load", normal)?;
-        physical("moment", moment)?;
-        if a > 0.0 && a.is_finite() && c.is_finite() {
-            if let Some(found) = self.newton(normal, moment, c, a, 1e-15)? {
-                return Ok(found);
-            }
-        }
-        self.normal_contact(normal, moment)
-    }
-
-    /// [`Contact::contact_from`] to the relative step `tolerance` (at least 1e-15) instead of
-    /// rounding: for contacts that only bound a quantity along a path, where 1e-10 of the
-    /// contact's size is far inside the bound's own margin. The bracketed solve (to rounding)
-    /// when Newton does not settle.
-    pub(crate) fn contact_roughly(
         &self,
         normal: f64,
         moment: f64,

@@ -29,6 +29,20 @@ fn reference_with(m1: f64, m2: f64) -> Cycle {
     Cycle::new(with_moment(p1, m1), with_moment(p2, m2))
 }
 
+/// Two cycles of Q and sigma between -/+ (q, sigma) at constant P, with the pressure's centroid
+/// at `e0` throughout (M = e0 P, the ramp included), 20 increments per half.
+fn fixed_centroid(normal: f64, q: f64, sigma: f64, e0: f64) -> History {
+    History::in_phase(
+        with_moment(point(normal, -q, -sigma), e0 * normal),
+        with_moment(point(normal, q, sigma), e0 * normal),
+        2,
+        20,
+        Ramp::NormalFirst,
+        10,
+    )
+    .unwrap()
+}
+
 fn close(a: f64, b: f64, scale: f64, what: &str) {
     assert!(
         (a - b).abs() <= 1e-10 * scale,
@@ -420,19 +434,9 @@ fn a_crack_at_the_edge_of_a_moved_hertz_contact_is_the_centred_ones() {
         .and_then(|k| k.with_endurance_range(700.0))
         .unwrap();
     let e0 = 0.25;
-    let history = |m: f64| {
-        History::in_phase(
-            with_moment(point(1000.0, -300.0, -60.0), m * 1000.0),
-            with_moment(point(1000.0, 300.0, 60.0), m * 1000.0),
-            2,
-            20,
-            Ramp::NormalFirst,
-            10,
-        )
-        .unwrap()
-    };
     let options = MarchOptions::default().with_cells(200).unwrap();
     let crack = CrackOptions::new(Position::RightEdge, 0.0, vec![0.05], 0.0).unwrap();
+    let history = |e| fixed_centroid(1000.0, 300.0, 60.0, e);
     let centred = crack::analyse(&c, &history(0.0), &options, &constants, &crack).unwrap();
     let moved = crack::analyse(&c, &history(e0), &options, &constants, &crack).unwrap();
     close(
@@ -472,19 +476,9 @@ fn fatigue_maxima_of_a_moved_hertz_contact_are_the_centred_ones_moved() {
         .and_then(|k| k.with_yield_stress(900.0))
         .unwrap();
     let e0 = -0.15;
-    let history = |m: f64| {
-        History::in_phase(
-            with_moment(point(1000.0, -300.0, -40.0), m * 1000.0),
-            with_moment(point(1000.0, 300.0, 40.0), m * 1000.0),
-            2,
-            20,
-            Ramp::NormalFirst,
-            10,
-        )
-        .unwrap()
-    };
     let options = MarchOptions::default().with_cells(200).unwrap();
     let grid = FatigueGrid::new(21, 6, 1.5, 0.5).unwrap();
+    let history = |e| fixed_centroid(1000.0, 300.0, 40.0, e);
     let a = fatigue::analyse(&c, &history(0.0), &options, &constants, &grid).unwrap();
     let b = fatigue::analyse(&c, &history(e0), &options, &constants, &grid).unwrap();
     close(b.grid_x[10], a.grid_x[10] + e0, 1.0, "the grid's centre");

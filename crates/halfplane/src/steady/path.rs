@@ -66,7 +66,7 @@ impl SegmentPath {
                     }
                 };
                 // 1e-10 of the contact's size: far inside the widening of the bounds.
-                let found = contact.contact_roughly(
+                let found = contact.contact_from(
                     point.normal(),
                     point.moment(),
                     (
