@@ -501,8 +501,25 @@ mod nowell_hills {
     };
     use halfplane::march::MarchOptions;
     use halfplane::stress::closed_form::NowellHills;
-    use halfplane::{reference as contacts, stress};
+    use halfplane::stress::MarchedTraction;
+    use halfplane::{reference as contacts, stress, Material};
     use std::f64::consts::PI;
+
+    /// The crack example's cycle at its peak (point 2: P = 1000, Q = 300, sigma = 60, f = 0.6),
+    /// marched on 400 cells: the material, the marched traction and Nowell and Hills' closed form
+    /// for the same state.
+    fn peak() -> (Material, MarchedTraction, NowellHills) {
+        let h = super::under_the_contact::history(300.0, 60.0, 30);
+        let contact = contacts::hertz();
+        let options = MarchOptions::default().with_cells(400).unwrap();
+        let peak = h.loads().len() - 30; // the end of the last rising half: point 2
+        let kept = stress::marched(&contact, &h, &options, &[peak])
+            .unwrap()
+            .remove(0);
+        assert!((kept.load.shear() - 300.0).abs() < 1e-9);
+        let nh = NowellHills::hertz(kept.half_width, 0.6, 1000.0, 300.0, 60.0);
+        (contact.material(), kept, nh)
+    }
 
     #[test]
     fn trailing_edge_cracks_under_the_published_partial_slip_field() {
@@ -515,16 +532,9 @@ mod nowell_hills {
         // -1.3e-3 p0 at 400 cells). As the crack shortens K_I/(sqrt(pi l)) tends to 1.1215 times
         // the closed form's trailing-edge peak, slowly (printed: the stress falls steeply below
         // the edge).
-        let h = super::under_the_contact::history(300.0, 60.0, 30);
-        let contact = contacts::hertz();
-        let material = contact.material();
-        let options = MarchOptions::default().with_cells(400).unwrap();
-        let peak = h.loads().len() - 30; // the end of the last rising half: point 2
-        let kept = stress::marched(&contact, &h, &options, &[peak]).unwrap();
-        assert!((kept[0].load.shear() - 300.0).abs() < 1e-9);
-        let a = kept[0].half_width;
-        let nh = NowellHills::hertz(a, 0.6, 1000.0, 300.0, 60.0);
-        let increments = [(&kept[0].traction, kept[0].load.bulk())];
+        let (material, kept, nh) = peak();
+        let a = kept.half_width;
+        let increments = [(&kept.traction, kept.load.bulk())];
         println!("| l (mm) | K_I here | K_I closed form + weight function | difference |");
         for l in [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2] {
             let s = CrackSolver::new(&Crack::new(-a, 0.0, l).unwrap(), &material, 40).unwrap();
@@ -560,15 +570,9 @@ mod nowell_hills {
         // measured at most 0.62% (-60 degrees, 0.1 mm, where 80 points leave 0.4% on their own,
         // see crack::graded's test), 0.2% or less from -45 to 45 degrees. Every crack here is
         // open at this peak (checked); 60 degrees at 0.1 mm closes and is left out.
-        let h = super::under_the_contact::history(300.0, 60.0, 30);
-        let contact = contacts::hertz();
-        let material = contact.material();
-        let options = MarchOptions::default().with_cells(400).unwrap();
-        let peak = h.loads().len() - 30;
-        let kept = stress::marched(&contact, &h, &options, &[peak]).unwrap();
-        let a = kept[0].half_width;
-        let nh = NowellHills::hertz(a, 0.6, 1000.0, 300.0, 60.0);
-        let increments = [(&kept[0].traction, kept[0].load.bulk())];
+        let (material, kept, nh) = peak();
+        let a = kept.half_width;
+        let increments = [(&kept.traction, kept.load.bulk())];
         println!(
             "| angle | l (mm) | K_I, K_II here | graded, closed-form field | difference / abs(K) |"
         );

@@ -1,14 +1,15 @@
 //! A second solution of the open surface-breaking crack, discretised apart from `solve.rs` so that
 //! the two check each other (docs/crack.md, "Inclined edge crack under remote tension"). It
 //! shares with `solve.rs` only the elasticity (the half-plane dislocation of `kernel.rs`, which its
-//! own tests pin by its two defining properties) and the dense LU; the representation of the
-//! densities, the singular integrals, the collocation and the tip factors are its own.
+//! own tests pin by its two defining properties), the dense LU and the barycentric interpolation
+//! formula; the representation of the densities, the singular integrals, the collocation and the
+//! tip factors are its own.
 //!
 //! **Why a second discretisation.** Where the crack meets the surface at `90° - θ` the body is two
 //! wedges with free faces, of `90° - θ` and `90° + θ`. The obtuse one has a free-free
 //! eigenfunction `r^λ` (Williams 1952: `sin(λ φ) = -λ sin φ` for the wedge angle `φ`) whose `λ`
-//! falls towards 1 as the crack leans: 1.54 at `θ = 60°`, 1.20 at 75°, 1.10 at 80° (no root below
-//! 2 at 45°). The density then behaves like `s^(λ-1)` at the mouth, which the global polynomial of
+//! falls towards 1 as the crack leans: 1.53 at `θ = 60°`, 1.20 at 75°, 1.13 at 80° (none between
+//! 1 and 3 up to 45°). The density then behaves like `s^(λ-1)` at the mouth, which the global polynomial of
 //! `solve.rs` approaches slowly. Here the density is piecewise polynomial on panels graded
 //! geometrically towards the mouth, which resolves any such power without knowing it.
 //!
@@ -40,6 +41,7 @@
 //! `lim sqrt(2 pi r) sigma` directly.
 
 use super::kernel::{dislocation_stress, C};
+use super::quadrature::{barycentric_weights, lagrange_basis};
 use super::solve::{resolve, Lu, TipFactors};
 use super::Crack;
 use crate::error::{Error, Result};
@@ -64,22 +66,20 @@ impl GradedMesh {
     /// between 0 and 1) the length of the next towards the tip, and `nodes` points per panel (2
     /// to [`MAX_NODES`]). The panel at the mouth is `ratio^levels` of the crack long.
     pub fn new(levels: usize, nodes: usize, ratio: f64) -> Result<Self> {
-        if !(1..=MAX_LEVELS).contains(&levels) {
-            return Err(Error::InvalidCount {
-                field: "graded mesh levels".into(),
-                value: levels as u64,
-                min: 1,
-                max: MAX_LEVELS as u64,
-            });
-        }
-        if !(2..=MAX_NODES).contains(&nodes) {
-            return Err(Error::InvalidCount {
-                field: "graded mesh nodes".into(),
-                value: nodes as u64,
-                min: 2,
-                max: MAX_NODES as u64,
-            });
-        }
+        let count = |field: &str, value: usize, min: usize, max: usize| {
+            if (min..=max).contains(&value) {
+                Ok(())
+            } else {
+                Err(Error::InvalidCount {
+                    field: field.into(),
+                    value: value as u64,
+                    min: min as u64,
+                    max: max as u64,
+                })
+            }
+        };
+        count("graded mesh levels", levels, 1, MAX_LEVELS)?;
+        count("graded mesh nodes", nodes, 2, MAX_NODES)?;
         if !(ratio > 0.0 && ratio < 1.0) {
             return Err(Error::InvalidInput {
                 field: "graded mesh ratio".into(),
@@ -121,32 +121,13 @@ struct Lagrange {
 impl Lagrange {
     fn new(n: usize) -> Result<Self> {
         let nodes = Rule::jacobi(n, 0.0)?.nodes;
-        let bary = (0..n)
-            .map(|i| {
-                1.0 / (0..n)
-                    .filter(|&k| k != i)
-                    .map(|k| nodes[i] - nodes[k])
-                    .product::<f64>()
-            })
-            .collect();
+        let bary = barycentric_weights(&nodes);
         Ok(Self { nodes, bary })
     }
 
-    /// Every basis polynomial at `t` (barycentric form; `t` may lie outside [0, 1]).
+    /// Every basis polynomial at `t` (`t` may lie outside [0, 1]).
     fn at(&self, t: f64) -> Vec<f64> {
-        if let Some(i) = self.nodes.iter().position(|&x| x == t) {
-            let mut e = vec![0.0; self.nodes.len()];
-            e[i] = 1.0;
-            return e;
-        }
-        let terms: Vec<f64> = self
-            .nodes
-            .iter()
-            .zip(&self.bary)
-            .map(|(x, w)| w / (t - x))
-            .collect();
-        let sum: f64 = terms.iter().sum();
-        terms.iter().map(|v| v / sum).collect()
+        lagrange_basis(&self.nodes, &self.bary, t)
     }
 }
 
