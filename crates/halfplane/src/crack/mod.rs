@@ -17,9 +17,12 @@
 //!
 //! Stages: `kernel.rs` (the half-plane dislocation kernel), `quadrature.rs` (the Gauss-Jacobi
 //! rule), `solve.rs` (assembly and the open crack), `contact.rs` (faces in contact with friction,
-//! incrementally over the cycle), `growth.rs` (ranges, threshold, verdict, the driver).
+//! incrementally over the cycle), `growth.rs` (ranges, threshold, verdict, the driver). Two
+//! references check them: `reference.rs` (published factors, a weight function) and `graded.rs`
+//! (the open crack solved a second way, on panels graded towards the mouth).
 
 mod contact;
+pub mod graded;
 mod growth;
 mod kernel;
 mod quadrature;

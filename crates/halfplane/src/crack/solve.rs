@@ -235,7 +235,7 @@ impl CrackSolver {
 }
 
 /// `[s22, s12]` of `[sxx, szz, sxz]` in the frame `(e1, e2)` (unit vectors in `(x, z)`).
-fn resolve(st: [f64; 3], e1: [f64; 2], e2: [f64; 2]) -> [f64; 2] {
+pub(super) fn resolve(st: [f64; 3], e1: [f64; 2], e2: [f64; 2]) -> [f64; 2] {
     let [sxx, szz, sxz] = st;
     let s22 = e2[0] * e2[0] * sxx + 2.0 * e2[0] * e2[1] * sxz + e2[1] * e2[1] * szz;
     let s12 = e1[0] * e2[0] * sxx + (e1[0] * e2[1] + e1[1] * e2[0]) * sxz + e1[1] * e2[1] * szz;
