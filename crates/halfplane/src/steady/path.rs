@@ -65,7 +65,9 @@ impl SegmentPath {
                         2.0 * f(&last) - f(&before)
                     }
                 };
-                // 1e-10 of the contact's size: far inside the widening of the bounds.
+                // 1e-5 of the contact's size: three orders inside the widening of the bounds (the
+                // change between neighbouring samples, of order 1e-2 of it); from the prediction
+                // (about 1e-3 off) two Newton steps.
                 let found = contact.contact_from(
                     point.normal(),
                     point.moment(),
@@ -73,7 +75,7 @@ impl SegmentPath {
                         ahead(NormalContact::centre),
                         ahead(NormalContact::half_width),
                     ),
-                    1e-10,
+                    1e-5,
                 )?;
                 (before, last) = (last, found);
                 samples.push((t, found));
