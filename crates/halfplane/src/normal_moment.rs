@@ -342,9 +342,10 @@ impl Contact {
 
     /// [`Contact::contact_near`] from a guessed contact `(c, a)` (a > 0, a prediction along a
     /// load path) instead of a solved one, to the relative step `tolerance` (at least 1e-15, the
-    /// solve to rounding; 1e-10 suits contacts that only bound a quantity along a path, far
-    /// inside the bound's own margin). The bracketed solve (to rounding) when Newton does not
-    /// settle.
+    /// solve to rounding; a looser one suits contacts that only bound a quantity along a path,
+    /// far inside the bound's own margin, and its K_N are those of Newton's Jacobian: about 1e-7
+    /// for the power law, exact for piecewise profiles). The bracketed solve (to rounding) when
+    /// Newton does not settle.
     pub(crate) fn contact_from(
         &self,
         normal: f64,
@@ -396,9 +397,10 @@ impl Contact {
                 return Ok(None);
             }
             if step_c.abs().max(step_a.abs()) <= tolerance * (a + c.abs()) {
-                // K_N from the accurate derivatives (the same ones for piecewise profiles).
+                // K_N from the accurate derivatives (the same ones for piecewise profiles) for a
+                // contact solved to rounding; a looser one only bounds a quantity.
                 let r = match self.profile.shape() {
-                    Shape::PowerLaw { .. } => self.resultants(c, a)?,
+                    Shape::PowerLaw { .. } if tolerance <= 1e-15 => self.resultants(c, a)?,
                     _ => r,
                 };
                 return self.finish(normal, moment, c, a, &r).map(Some);
