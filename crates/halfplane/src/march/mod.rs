@@ -44,6 +44,8 @@
 
 mod cycles;
 mod dissipation;
+#[allow(dead_code)]
+pub(crate) mod gap;
 mod kernel;
 mod marcher;
 mod solve;
