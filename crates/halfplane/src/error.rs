@@ -385,6 +385,16 @@ pub enum Error {
         what: &'static str,
     },
 
+    /// A wear run stopped at a physical cycle whose march failed (the contact opened entirely,
+    /// left the grid, or slid where it may not); the checkpoints before it were reported.
+    #[error("wear stopped at cycle {cycle}: {cause}")]
+    WearStopped {
+        /// The physical cycle (1-based) whose march failed.
+        cycle: u64,
+        /// Why.
+        cause: Box<Error>,
+    },
+
     /// The moment would put a contact end beyond a tabulated profile at this normal load.
     #[error(
         "invalid {field} = {value}: at normal load P = {normal} a contact end would leave the tabulated profile; \

@@ -59,6 +59,7 @@ pub mod slip_map;
 mod spline;
 pub mod steady;
 pub mod stress;
+pub mod wear;
 pub mod written;
 
 pub use error::{Error, Result};

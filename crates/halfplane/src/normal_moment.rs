@@ -63,6 +63,26 @@ impl NormalContact {
         }
     }
 
+    /// A contact solved on the marching grid (a worn gap, `march/gap.rs`): its ends the outer
+    /// edges of the outermost touching cells, K_N not known there (0).
+    pub(crate) fn on_grid(normal: f64, moment: f64, ends: PerEdge<f64>, rotation: f64) -> Self {
+        Self {
+            normal,
+            moment,
+            ends,
+            rotation,
+            intensity: PerEdge {
+                left: 0.0,
+                right: 0.0,
+            },
+            on_flat: PerEdge {
+                left: false,
+                right: false,
+            },
+            centred: false,
+        }
+    }
+
     /// The same contact with the end `edge` put at `x`, a rounding-size move: the march puts an
     /// end on a cell centre exactly where its solve found it there to 1e-13.
     pub(crate) fn with_end(mut self, edge: Edge, x: f64) -> Self {

@@ -93,6 +93,7 @@ impl Error {
             Error::OutsideProfile { .. } => "OutsideProfile",
             Error::AsymmetricProfile { .. } => "AsymmetricProfile",
             Error::MomentOutsideTable { .. } => "MomentOutsideTable",
+            Error::WearStopped { .. } => "WearStopped",
         }
     }
 
@@ -101,6 +102,8 @@ impl Error {
     /// the table has to be extended.
     pub fn kind(&self) -> ErrorKind {
         match self {
+            // A wear run that stopped is whatever stopped it.
+            Error::WearStopped { cause, .. } => cause.kind(),
             Error::InvalidInput { .. }
             | Error::InvalidCount { .. }
             | Error::TooManyIncrements { .. }
@@ -142,6 +145,7 @@ impl Error {
     /// valid. Gross sliding has none: the march slides too.
     pub fn alternative(&self) -> Option<Alternative> {
         match self {
+            Error::WearStopped { .. } => None,
             Error::SlipReversesInHalf { .. } | Error::StickZoneOutsideContact { .. } => {
                 Some(Alternative::March)
             }

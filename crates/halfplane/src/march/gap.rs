@@ -150,10 +150,7 @@ impl Grid<'_> {
         let det = a11 * a22 - a12 * a21;
         // A single cell cannot take a moment about its own centre: then only the load is held.
         let (approach, rotation) = if det.abs() > 1e-14 * (a11 * a22).abs() {
-            (
-                (b1 * a22 - a12 * b2) / det,
-                (a11 * b2 - a21 * b1) / det,
-            )
+            ((b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det)
         } else {
             (b1 / a11, 0.0)
         };
@@ -164,7 +161,13 @@ impl Grid<'_> {
     }
 
     /// The deformed gap `h_i = g_i + theta x_i - delta + (A/pi) (G p)_i` at every cell.
-    fn deformed(&mut self, pressure: &[f64], gap: &[f64], approach: f64, rotation: f64) -> Vec<f64> {
+    fn deformed(
+        &mut self,
+        pressure: &[f64],
+        gap: &[f64],
+        approach: f64,
+        rotation: f64,
+    ) -> Vec<f64> {
         let mut u = vec![0.0; pressure.len()];
         self.kernel.apply(pressure, &mut u);
         let c = self.compliance / std::f64::consts::PI;
@@ -255,7 +258,9 @@ impl Grid<'_> {
 fn gap_scale(gap: &[f64]) -> f64 {
     let (lo, hi) = gap
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &g| (l.min(g), h.max(g)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &g| {
+            (l.min(g), h.max(g))
+        });
     (hi - lo).max(f64::MIN_POSITIVE)
 }
 
@@ -298,7 +303,11 @@ mod tests {
             let first: f64 = w * s.pressure.iter().zip(&x).map(|(p, x)| p * x).sum::<f64>();
             assert!((total - normal).abs() < 1e-12 * normal, "P {total}");
             assert!(first.abs() < 1e-12 * normal * a, "M {first}");
-            assert!(s.rotation.abs() < 1e-12, "a symmetric gap does not tilt: {}", s.rotation);
+            assert!(
+                s.rotation.abs() < 1e-12,
+                "a symmetric gap does not tilt: {}",
+                s.rotation
+            );
             let cells = s.pressure.iter().filter(|&&p| p > 0.0).count() as f64;
             // One cell at each edge either way: an edge cell whose centre lies just outside the
             // exact contact may carry a small pressure.
@@ -344,7 +353,11 @@ mod tests {
             s.rotation
         );
         let first = x.iter().zip(&s.pressure).find(|(_, &p)| p > 0.0).unwrap().0;
-        assert!((first - (e - a)).abs() <= w, "left end {first} against {}", e - a);
+        assert!(
+            (first - (e - a)).abs() <= w,
+            "left end {first} against {}",
+            e - a
+        );
         // A gap of a pad pressed off its table cannot carry the moment: named error, not NaN.
         let far = g.solve(&gap, normal, 10.0 * a * normal, None);
         assert!(far.is_err() || far.unwrap().pressure.iter().all(|p| p.is_finite()));

@@ -44,14 +44,15 @@
 
 mod cycles;
 mod dissipation;
-#[allow(dead_code)]
 pub(crate) mod gap;
 mod kernel;
 mod marcher;
 mod solve;
 mod toeplitz;
 mod types;
+mod worn;
 
 pub use cycles::{march, march_steady, march_steady_until, march_until};
 pub use marcher::Marcher;
 pub use types::{CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, StepReport};
+pub use worn::Worn;
