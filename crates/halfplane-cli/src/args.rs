@@ -45,6 +45,10 @@ pub enum Command {
     /// last cycle of [history], with crack-face contact, against El Haddad's short-crack
     /// threshold from [fatigue] threshold and endurance_range; verdict over the lengths.
     Crack(CrackArgs),
+    /// Fretting wear over [wear] cycles (Archard or dissipated-energy law, cycle jumping):
+    /// worn volume, depth, energy, contact and stick zone at each checkpoint; --fields writes the
+    /// worn profile, pressure, traction and slip range of each.
+    Wear(WearArgs),
     /// Runs every row of a design (grid, random or Latin hypercube) over numeric fields of a case:
     /// the steady state (or a march) of each, on every core, streamed to CSV or Parquet.
     Sweep(SweepArgs),
@@ -143,6 +147,23 @@ pub struct MarchArgs {
     /// to write more than 100 GB (README, "Size limits").
     #[arg(long)]
     pub no_size_limit: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct WearArgs {
+    /// Case file (TOML) with [material], [friction], [profile], [history] (one cycle, or kind =
+    /// "sliding") and [wear], and optionally [solver] and [units].
+    pub case: PathBuf,
+    // csv: one row per checkpoint; table: the run, then the checkpoints.
+    #[command(flatten)]
+    pub format: FormatArgs,
+    /// Write each checkpoint's fields (x, depth, depth_pad, depth_specimen, pressure, traction,
+    /// slip_range) as DIR/checkpoint_CYCLE.csv.
+    #[arg(long, value_name = "DIR")]
+    pub fields: Option<PathBuf>,
+    /// Cells across the grid (overrides [solver] cells; default 400).
+    #[arg(long)]
+    pub cells: Option<usize>,
 }
 
 #[derive(Args, Debug)]

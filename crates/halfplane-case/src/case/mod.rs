@@ -96,7 +96,8 @@ impl RawLoad {
 pub struct Sliding {
     /// The constant normal load (with its moment and bulk tension).
     pub load: LoadPoint,
-    /// The bodies' relative sliding displacement once sliding (> 0).
+    /// The bodies' relative sliding displacement once sliding, beyond the partial-slip onset:
+    /// the distance they slide each way once Q reaches f P (> 0).
     pub amplitude: f64,
     /// Increments of Q from -f P to f P and back, per half-cycle.
     pub steps_per_half: usize,
@@ -510,7 +511,7 @@ fn resolve_sliding(h: RawHistory) -> Result<Sliding> {
     let (bulk, moment) = (number(h.bulk, "bulk")?, number(h.moment, "moment")?);
     let load = LoadPoint::new("history", normal, 0.0, bulk)?.with_moment("history", moment)?;
     let amplitude = h.amplitude.ok_or_else(|| {
-        anyhow!("missing field history.amplitude: give the bodies' sliding displacement once they slide (> 0, mm)")
+        anyhow!("missing field history.amplitude: give the distance the bodies slide each way once Q reaches f P (> 0, mm)")
     })?;
     if !(amplitude.is_finite() && amplitude > 0.0) {
         bail!("invalid history.amplitude = {amplitude}: must be a finite sliding displacement > 0 (mm)");

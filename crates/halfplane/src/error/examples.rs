@@ -95,6 +95,10 @@ fn input() -> Vec<Error> {
             smallest: -1.0,
             largest: 1.0,
         },
+        Error::GridTooNarrow {
+            field: "wear.span",
+            end: -1.5,
+        },
         Error::WearStopped {
             cycle: 12,
             cause: Box::new(Error::InvalidInput {

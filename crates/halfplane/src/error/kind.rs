@@ -94,6 +94,7 @@ impl Error {
             Error::AsymmetricProfile { .. } => "AsymmetricProfile",
             Error::MomentOutsideTable { .. } => "MomentOutsideTable",
             Error::WearStopped { .. } => "WearStopped",
+            Error::GridTooNarrow { .. } => "GridTooNarrow",
         }
     }
 
@@ -120,7 +121,8 @@ impl Error {
             | Error::UnequalColumns { .. }
             | Error::LengthMismatch { .. }
             | Error::OutsideProfile { .. }
-            | Error::MomentOutsideTable { .. } => ErrorKind::Input,
+            | Error::MomentOutsideTable { .. }
+            | Error::GridTooNarrow { .. } => ErrorKind::Input,
             Error::SlipReversesInHalf { .. }
             | Error::NoStickZone { .. }
             | Error::StickZoneOutsideContact { .. }
@@ -180,7 +182,8 @@ impl Error {
             | Error::LengthMismatch { .. }
             | Error::OutsideProfile { .. }
             | Error::AsymmetricProfile { .. }
-            | Error::MomentOutsideTable { .. } => None,
+            | Error::MomentOutsideTable { .. }
+            | Error::GridTooNarrow { .. } => None,
         }
     }
 }

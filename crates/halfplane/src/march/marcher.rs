@@ -658,10 +658,9 @@ impl Marcher {
         };
         let n = self.x.len();
         if first == 0 || last == n - 1 {
-            return Err(Error::InvalidInput {
-                field: "wear.span".into(),
-                value: self.x[if first == 0 { 0 } else { n - 1 }],
-                valid: "a grid wider than the worn contact (raise wear.span: the contact reached the grid's end at this x)",
+            return Err(Error::GridTooNarrow {
+                field: "wear.span",
+                end: self.x[if first == 0 { 0 } else { n - 1 }],
             });
         }
         let ends = PerEdge {
