@@ -51,16 +51,29 @@ fn the_stick_zone_never_wears_and_the_contact_shrinks_onto_it() {
         }
     }
     // Worn out of contact, the annuli stop slipping: the stick zone carries the load alone and
-    // nothing more is dissipated (q/p at its punch-like edges is Q/P < f).
+    // nothing more is dissipated (q/p at its punch-like edges is Q/P < f). Exact theory gets
+    // there only asymptotically (an annulus's pressure decays like its wear rate), so the
+    // tolerances are what the tail leaves: at a jump bound of 0.005 (converged, docs/wear.md)
+    // the example's 1e6 cycles leave 6e-5 of the first cycle's energy and 4e-6 of P outside the
+    // stick zone; 1e-3 of each.
     let last = r.checkpoints.last().unwrap();
-    assert_eq!(
-        last.energy_per_cycle, 0.0,
-        "still dissipating after 1e6 cycles"
+    let first = &r.checkpoints[0];
+    assert!(
+        last.energy_per_cycle < 1e-3 * first.energy_per_cycle,
+        "still dissipating after 1e6 cycles: {} of the first cycle's energy",
+        last.energy_per_cycle / first.energy_per_cycle
     );
-    assert_eq!(
-        Some(last.contact),
-        last.stick,
-        "the final contact is the stick zone"
+    let f = &last.fields;
+    let w = f.x[1] - f.x[0];
+    let outside: f64 =
+        f.x.iter()
+            .zip(&f.pressure)
+            .filter(|(x, _)| x.abs() > c + w)
+            .map(|(_, p)| p * w)
+            .sum();
+    assert!(
+        outside < 1e-3 * P,
+        "the worn annuli still carry {outside} of P = {P} after 1e6 cycles"
     );
     // 1e6 cycles in few marches: the jumps stop when the annuli stop wearing.
     assert!(
@@ -147,5 +160,22 @@ fn a_sliding_cylinder_wears_a_scar_tending_to_the_rigid_one() {
     assert!(
         (before - 1.0).abs() < 0.03,
         "contact over rigid scar {before} after 1e5 cycles"
+    );
+    // The pressure tends to uniform: peak over mean from Hertz's 4/pi. It first rises (the
+    // worn flat's edges take load: 1.37 after 1e3 cycles in examples/wear-sliding.toml), then
+    // falls (1.12 there after 1e5, converged in the jump bound: docs/convergence.md).
+    let uniformity = |cp: &wear::Checkpoint| cp.peak_pressure * (cp.contact[1] - cp.contact[0]) / P;
+    // Unworn: the contact's ends are cell edges, a cell of the 50 across it (2%).
+    let first = uniformity(&r.checkpoints[0]);
+    assert!(
+        (first * std::f64::consts::PI / 4.0 - 1.0).abs() < 2e-2,
+        "unworn peak over mean {first}, Hertz 4/pi"
+    );
+    // Here (a coarser grid than the example's, 50 cells across the unworn contact) 1.205 after
+    // 1e5 cycles: asserted at least 0.05 below the unworn ratio, on its way to 1.
+    let end = uniformity(last);
+    assert!(
+        end < first - 0.05 && end > 1.0,
+        "peak over mean {end} after 1e5 cycles, unworn {first}: not tending to uniform"
     );
 }

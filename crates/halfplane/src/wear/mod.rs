@@ -62,9 +62,9 @@ pub struct WearOptions {
 }
 
 impl WearOptions {
-    /// The default bound on the depth a jump adds: 2% of the elastic approach (docs/wear.md
+    /// The default bound on the depth a jump adds: 1% of the elastic approach (docs/wear.md
     /// shows the answer converging as it tightens).
-    pub const DEFAULT_MAX_DEPTH_INCREMENT: f64 = 0.02;
+    pub const DEFAULT_MAX_DEPTH_INCREMENT: f64 = 0.01;
 
     /// Wear by `law` with `coefficient` (k or alpha, > 0, in 1/stress) over `cycles` physical
     /// cycles (1 to [`MAX_CYCLES`]), reported at `checkpoints` (strictly increasing cycle numbers
