@@ -1,10 +1,12 @@
 //! The `wear` report: one row per checkpoint (the CSV, the table and the JSON `checkpoints`),
-//! and the fields of each checkpoint for `--fields`.
+//! the fatigue parameters of each checkpoint's cycle for `--fatigue`, and the fields of each
+//! checkpoint for `--fields`.
 
 use super::{Cell, Column, Style};
 use crate::units::{Quantity, Units};
+use halfplane::fatigue::{FatigueResult, Parameter};
 use halfplane::wear::{Checkpoint, WearOptions};
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 use std::fmt::Write;
 
 /// One checkpoint.
@@ -21,6 +23,66 @@ pub struct WearRow {
     stick_left: Option<f64>,
     stick_right: Option<f64>,
     slip_amplitude_max: f64,
+    /// `--fatigue`: each parameter's maximum over the checkpoint's cycle (absent without it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fatigue: Option<CheckpointFatigue>,
+}
+
+/// A parameter's maximum over a checkpoint's cycle (`--fatigue`): the JSON object
+/// `fatigue.<parameter>`, the CSV columns `fatigue.<parameter>.<field>`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FatigueMax {
+    max: f64,
+    x: f64,
+    z: f64,
+    /// The point method (with the critical distance only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    point_method: Option<f64>,
+    /// The line method (with the critical distance only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    line_method: Option<f64>,
+}
+
+impl FatigueMax {
+    /// `(field, value)` in column order, the critical-distance values when given.
+    fn fields(&self) -> Vec<(&'static str, f64)> {
+        let mut v = vec![("max", self.max), ("x", self.x), ("z", self.z)];
+        v.extend(self.point_method.map(|m| ("point_method", m)));
+        v.extend(self.line_method.map(|m| ("line_method", m)));
+        v
+    }
+}
+
+/// The parameters of a checkpoint, in the order of `halfplane fatigue`, keyed by its names.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CheckpointFatigue(Vec<(&'static str, FatigueMax)>);
+
+impl CheckpointFatigue {
+    /// Each reported parameter's maximum of `result`.
+    pub fn new(result: &FatigueResult) -> Self {
+        Self(
+            result
+                .parameters
+                .iter()
+                .map(|p| {
+                    let m = FatigueMax {
+                        max: p.value,
+                        x: p.x,
+                        z: p.z,
+                        point_method: p.point_method,
+                        line_method: p.line_method,
+                    };
+                    (p.parameter.name(), m)
+                })
+                .collect(),
+        )
+    }
+}
+
+impl Serialize for CheckpointFatigue {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(self.0.iter().map(|(k, v)| (k, v)))
+    }
 }
 
 fn optional(x: Option<f64>) -> Cell {
@@ -89,8 +151,44 @@ impl WearRow {
             stick_left: c.stick.map(|s| s[0]),
             stick_right: c.stick.map(|s| s[1]),
             slip_amplitude_max: c.slip_amplitude_max,
+            fatigue: None,
         }
     }
+
+    /// With the fatigue parameters of the checkpoint's cycle.
+    pub fn with_fatigue(self, fatigue: CheckpointFatigue) -> Self {
+        Self {
+            fatigue: Some(fatigue),
+            ..self
+        }
+    }
+}
+
+/// One parameter at one checkpoint, for the table of `--fatigue`.
+struct FatigueLine<'a> {
+    cycle: u64,
+    parameter: &'static str,
+    at: &'a FatigueMax,
+}
+
+impl FatigueLine<'_> {
+    const COLUMNS: [Column<Self>; 7] = {
+        use Quantity::{Length, None};
+        use Style::{Fixed, Sig};
+        [
+            Column::<Self>::new("cycle", None, |r| Cell::Text(r.cycle.to_string()))
+                .table(13, Fixed(0)),
+            Column::<Self>::new("parameter", None, |r| Cell::Text(r.parameter.into()))
+                .table(22, Fixed(0)),
+            Column::<Self>::new("max", None, |r| Cell::Num(r.at.max)).table(13, Sig(5)),
+            Column::<Self>::new("x", Length, |r| Cell::Num(r.at.x)).table(11, Fixed(5)),
+            Column::<Self>::new("z", Length, |r| Cell::Num(r.at.z)).table(11, Fixed(5)),
+            Column::<Self>::new("point_method", None, |r| optional(r.at.point_method))
+                .table(13, Sig(5)),
+            Column::<Self>::new("line_method", None, |r| optional(r.at.line_method))
+                .table(13, Sig(5)),
+        ]
+    };
 }
 
 /// The whole `wear` report (its JSON object).
@@ -142,9 +240,69 @@ impl WearReport {
         }
     }
 
-    /// One CSV row per checkpoint.
+    /// The fatigue parameters of each checkpoint (`--fatigue`), one result per checkpoint, in
+    /// order.
+    pub fn with_fatigue(mut self, results: &[FatigueResult]) -> Self {
+        let rows = std::mem::take(&mut self.checkpoints);
+        self.checkpoints = rows
+            .into_iter()
+            .zip(results)
+            .map(|(row, r)| row.with_fatigue(CheckpointFatigue::new(r)))
+            .collect();
+        self
+    }
+
+    /// The `--fatigue` CSV columns: `fatigue.<parameter>.<field>` for every parameter and field
+    /// some checkpoint has, parameters in the order of `halfplane fatigue`.
+    fn fatigue_columns(&self) -> Vec<(&'static str, &'static str)> {
+        let mut columns: Vec<(&'static str, &'static str)> = Vec::new();
+        for p in Parameter::ALL {
+            let name = p.name();
+            for field in ["max", "x", "z", "point_method", "line_method"] {
+                let given = self.checkpoints.iter().any(|r| {
+                    r.fatigue.as_ref().is_some_and(|f| {
+                        f.0.iter()
+                            .any(|(k, m)| *k == name && m.fields().iter().any(|(g, _)| *g == field))
+                    })
+                });
+                if given {
+                    columns.push((name, field));
+                }
+            }
+        }
+        columns
+    }
+
+    /// One CSV row per checkpoint; with `--fatigue`, the columns `fatigue.<parameter>.<field>`
+    /// after the others.
     pub fn csv(&self) -> String {
-        super::csv(&WearRow::COLUMNS, &self.checkpoints)
+        let text = super::csv(&WearRow::COLUMNS, &self.checkpoints);
+        let columns = self.fatigue_columns();
+        if columns.is_empty() {
+            return text;
+        }
+        let mut o = String::new();
+        let mut lines = text.lines();
+        o.push_str(lines.next().unwrap_or_default());
+        for (name, field) in &columns {
+            let _ = write!(o, ",fatigue.{name}.{field}");
+        }
+        o.push('\n');
+        for (line, row) in lines.zip(&self.checkpoints) {
+            o.push_str(line);
+            for (name, field) in &columns {
+                o.push(',');
+                let value = row.fatigue.as_ref().and_then(|f| {
+                    let (_, m) = f.0.iter().find(|(k, _)| k == name)?;
+                    m.fields().into_iter().find(|(g, _)| g == field)
+                });
+                if let Some((_, v)) = value {
+                    let _ = write!(o, "{v}");
+                }
+            }
+            o.push('\n');
+        }
+        o
     }
 
     /// One JSON object.
@@ -176,7 +334,24 @@ impl WearReport {
             super::significant(self.cell_width, 5),
             self.units.length
         );
-        o + &super::table(&WearRow::COLUMNS, &self.checkpoints, &self.units)
+        o += &super::table(&WearRow::COLUMNS, &self.checkpoints, &self.units);
+        let lines: Vec<FatigueLine> = self
+            .checkpoints
+            .iter()
+            .filter_map(|r| r.fatigue.as_ref().map(|f| (r.cycle, f)))
+            .flat_map(|(cycle, f)| {
+                f.0.iter().map(move |(parameter, at)| FatigueLine {
+                    cycle,
+                    parameter,
+                    at,
+                })
+            })
+            .collect();
+        if !lines.is_empty() {
+            o += "\nfatigue over each checkpoint's cycle (maxima over the [fatigue] grid of the unworn contact):\n";
+            o += &super::table(&FatigueLine::COLUMNS, &lines, &self.units);
+        }
+        o
     }
 }
 
@@ -220,6 +395,7 @@ mod tests {
             stick_left: None,
             stick_right: None,
             slip_amplitude_max: 1e-3,
+            fatigue: None,
         };
         let text = crate::report::csv(&WearRow::COLUMNS, std::slice::from_ref(&row));
         let (header, line) = text.split_once('\n').expect("a header line and a row");
@@ -227,5 +403,90 @@ mod tests {
         csv.sort();
         assert_eq!(csv, json_keys(&row));
         assert_eq!(line, "10,0.000001,0.000002,0.1,1,-0.5,0.5,800,,,0.001\n");
+    }
+
+    /// `--fatigue`: the CSV's extra columns after the 11 of the checkpoint are the JSON's
+    /// `fatigue` object flattened (`fatigue.<parameter>.<field>`), the critical-distance values
+    /// where given, and the table lists each parameter at each checkpoint.
+    #[test]
+    fn fatigue_columns_follow_the_checkpoint_and_name_the_json_fields() {
+        let at = |max: f64, l: Option<f64>| FatigueMax {
+            max,
+            x: -0.76,
+            z: 0.0,
+            point_method: l,
+            line_method: l,
+        };
+        let fatigue = CheckpointFatigue(vec![
+            ("swt", at(2.6, Some(1.5))),
+            ("ruiz_f1", at(0.13, None)),
+        ]);
+        let row = WearRow {
+            cycle: 1,
+            wear_volume: 1e-6,
+            max_depth: 2e-6,
+            energy_per_cycle: 0.1,
+            dissipated_energy: 0.1,
+            contact_left: -0.76,
+            contact_right: 0.76,
+            peak_pressure: 836.0,
+            stick_left: Some(-0.5),
+            stick_right: Some(0.5),
+            slip_amplitude_max: 1e-3,
+            fatigue: None,
+        }
+        .with_fatigue(fatigue);
+        let report = WearReport {
+            law: "archard",
+            coefficient: 3e-8,
+            share: 0.5,
+            cycles: 1,
+            max_depth_increment: 0.01,
+            cells: 400,
+            cell_width: 0.0077,
+            simulated_cycles: Some(1),
+            elastic_approach: 0.0058,
+            checkpoints: vec![row.clone()],
+            stopped: None,
+            units: Units::default(),
+        };
+        let text = report.csv();
+        let (header, line) = text.split_once('\n').unwrap();
+        let plain = crate::report::csv(&WearRow::COLUMNS, std::slice::from_ref(&row));
+        let (plain_header, plain_line) = plain.split_once('\n').unwrap();
+        let extra = "fatigue.swt.max,fatigue.swt.x,fatigue.swt.z,fatigue.swt.point_method,\
+                     fatigue.swt.line_method,fatigue.ruiz_f1.max,fatigue.ruiz_f1.x,fatigue.ruiz_f1.z";
+        assert_eq!(header, format!("{plain_header},{extra}"));
+        assert_eq!(
+            line,
+            format!(
+                "{},2.6,-0.76,0,1.5,1.5,0.13,-0.76,0\n",
+                plain_line.trim_end()
+            )
+        );
+        let v = serde_json::to_value(&row).unwrap();
+        let mut keys: Vec<String> = Vec::new();
+        for (k, v) in v.as_object().unwrap() {
+            match v.as_object() {
+                Some(params) => {
+                    for (p, fields) in params {
+                        for f in fields.as_object().unwrap().keys() {
+                            keys.push(format!("{k}.{p}.{f}"));
+                        }
+                    }
+                }
+                None => keys.push(k.clone()),
+            }
+        }
+        keys.sort();
+        let mut csv: Vec<String> = header.split(',').map(str::to_string).collect();
+        csv.sort();
+        assert_eq!(csv, keys);
+        let table = report.table();
+        assert!(
+            table.contains("fatigue over each checkpoint's cycle"),
+            "{table}"
+        );
+        assert!(table.lines().any(|l| l.contains("ruiz_f1")), "{table}");
     }
 }

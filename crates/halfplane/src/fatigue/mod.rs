@@ -11,8 +11,10 @@
 //! With `threshold` and `endurance_range` it adds the critical-distance values (point method at
 //! `L/2`, line method over `2L`, both straight into the depth below the maximum), and with the
 //! strain-life constants the cycles to initiation. Conventions are those of [`crate::stress`]:
-//! `z >= 0` is the depth in the body carrying the bulk tension. Stages: `stages.rs` (march,
-//! grid, maxima, Ruiz), `plane.rs` and `space.rs` (the plane searches), `crossland.rs`.
+//! `z >= 0` is the depth in the body carrying the bulk tension. [`analyse_cycle`] evaluates a
+//! cycle recorded cell by cell instead ([`CycleTractions`]: a worn cycle of [`crate::wear`]).
+//! Stages: `stages.rs` (the steady cycle, grid, maxima, Ruiz), `plane.rs` and `space.rs` (the
+//! plane searches), `crossland.rs`.
 
 mod constants;
 mod crossland;
@@ -28,6 +30,7 @@ pub use grid::{FatigueGrid, Planes, MAX_GRID_POINTS};
 pub use life::{fatemi_socie_life, swt_life};
 pub use plane::{mcdiarmid_equivalent_shear, mwcm_effective_shear, Critical};
 pub use result::{FatigueResult, Parameter, ParameterResult};
+pub use stages::CycleTractions;
 
 use crate::error::Result;
 use crate::history::History;
@@ -126,6 +129,49 @@ pub fn analyse(
     grid: &FatigueGrid,
 ) -> Result<FatigueResult> {
     let cycle = stages::SteadyCycle::march(contact, history, options)?;
+    evaluate(&cycle, constants, grid)
+}
+
+/// The parameters over a cycle recorded cell by cell (a worn cycle of [`crate::wear`], whose
+/// gap no profile describes), as [`analyse`] evaluates a march's last cycle: the same stages,
+/// each increment's tractions built as a march's ([`crate::stress::Traction::from_march_ends`]),
+/// the grid spanning `grid.width` and `grid.depth` times the half-width of `contact` `[b1, b2]`
+/// about its centre (the wear command passes the unworn contact, so that every checkpoint is
+/// evaluated on the same points), the increments numbered from 1 in `step`.
+///
+/// # Errors
+/// [`crate::Error::NoCycle`] for a cycle without increments; [`crate::Error::InvalidInput`]
+/// naming `contact` when its ends are not finite with `b1 < b2`; the stress field's errors.
+pub fn analyse_cycle(
+    material: &Material,
+    cycle: &CycleTractions,
+    contact: [f64; 2],
+    constants: &FatigueConstants,
+    grid: &FatigueGrid,
+) -> Result<FatigueResult> {
+    if cycle.is_empty() {
+        return Err(crate::Error::NoCycle {
+            what: "fatigue analysis",
+        });
+    }
+    if !(contact[0].is_finite() && contact[1].is_finite() && contact[0] < contact[1]) {
+        return Err(crate::Error::InvalidInput {
+            field: "contact".into(),
+            value: contact[1] - contact[0],
+            valid: "finite contact ends b1 < b2 (the grid is scaled on their half-width)",
+        });
+    }
+    let cycle = stages::SteadyCycle::recorded(cycle, *material, contact)?;
+    evaluate(&cycle, constants, grid)
+}
+
+/// The stages after the steady cycle: the grid, the parameters at each point, their maxima,
+/// Ruiz.
+fn evaluate(
+    cycle: &stages::SteadyCycle,
+    constants: &FatigueConstants,
+    grid: &FatigueGrid,
+) -> Result<FatigueResult> {
     let points = stages::GridPoints::new(grid, cycle.a_max, cycle.centre);
     let planes: Vec<CriticalPlanes> = cycle
         .histories(&points.px, &points.pz)?
@@ -134,13 +180,13 @@ pub fn analyse(
         .collect();
     let swt_map = planes.iter().map(|p| p.swt.value).collect();
     let maps = stages::maps(&planes);
-    let mut parameters = stages::maxima(&cycle, &points, &planes, constants, grid.planes)?;
-    let surface = stages::ruiz(&cycle)?;
+    let mut parameters = stages::maxima(cycle, &points, &planes, constants, grid.planes)?;
+    let surface = stages::ruiz(cycle)?;
     parameters.extend(surface.parameters);
     parameters.sort_by_key(|p| p.parameter as u8);
     Ok(FatigueResult {
         critical_distance: constants.critical_distance(),
-        steps: cycle.steps,
+        steps: cycle.steps.clone(),
         parameters,
         grid_x: points.grid_x,
         grid_z: points.grid_z,

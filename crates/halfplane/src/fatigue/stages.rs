@@ -1,5 +1,6 @@
-//! The stages of [`super::analyse`]: the march to the steady cycle, the grid, each parameter's
-//! maximum (with its critical-distance values and life) and Ruiz on the surface.
+//! The stages of [`super::analyse`] and [`super::analyse_cycle`]: the steady cycle (from a march,
+//! or from a cycle's recorded cell tractions), the grid, each parameter's maximum (with its
+//! critical-distance values and life) and Ruiz on the surface.
 
 use super::{
     critical_planes_over, fatemi_socie_life, swt_life, CriticalPlanes, FatigueConstants,
@@ -7,12 +8,121 @@ use super::{
 };
 use crate::error::{Error, Result};
 use crate::history::History;
-use crate::march::{march, MarchOptions, MarchResult};
+use crate::labels::PerEdge;
+use crate::march::{march, Fields, MarchOptions};
 use crate::material::Material;
 use crate::normal::Contact;
 use crate::stress::{self, Stress, Traction};
 
-/// The steady (last) cycle of a march: its increments' tractions and what Ruiz needs.
+/// A marched cycle as a grid of cells recorded it, increment by increment: what
+/// [`super::analyse_cycle`] evaluates (the fatigue parameters of a worn cycle,
+/// [`crate::march::Worn::record_tractions`]). Valid by construction: every increment has one
+/// pressure and one shear traction per cell, and finite, ordered contact ends.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CycleTractions {
+    x: Vec<f64>,
+    slip_range: Vec<f64>,
+    increments: Vec<CellIncrement>,
+}
+
+/// One increment of a [`CycleTractions`].
+#[derive(Debug, Clone, PartialEq)]
+struct CellIncrement {
+    ends: PerEdge<f64>,
+    bulk: f64,
+    pressure: Vec<f64>,
+    traction: Vec<f64>,
+}
+
+impl CycleTractions {
+    /// A cycle over cells centred at `x` (increasing) whose slip range over the cycle is
+    /// `slip_range` (one per cell), with no increment yet.
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] naming `slip_range`.
+    pub fn new(x: Vec<f64>, slip_range: Vec<f64>) -> Result<Self> {
+        same_length("slip_range", &slip_range, x.len())?;
+        Ok(Self {
+            x,
+            slip_range,
+            increments: Vec::new(),
+        })
+    }
+
+    /// Adds the next increment: the contact `ends` `[b1, b2]` (its tractions are built as a
+    /// march's, [`Traction::from_march_ends`]: square-root shaped next to the ends, linear
+    /// between the cell centres inside), the bulk stress, and per cell the pressure (compressive
+    /// positive) and the shear traction (`crate::march`'s sign).
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] naming `pressure` or `traction`; [`Error::InvalidInput`] naming
+    /// a contact end that is not finite or `b2 < b1`.
+    pub fn push(
+        &mut self,
+        ends: [f64; 2],
+        bulk: f64,
+        pressure: Vec<f64>,
+        traction: Vec<f64>,
+    ) -> Result<()> {
+        same_length("pressure", &pressure, self.x.len())?;
+        same_length("traction", &traction, self.x.len())?;
+        let ends = PerEdge {
+            left: ends[0],
+            right: ends[1],
+        };
+        // The check `Traction::from_march_ends` makes, here so that a bad end fails on entry.
+        Traction::from_march_ends(ends, &fields(&self.x, &pressure, &traction))?;
+        crate::error::physical("bulk", bulk)?;
+        self.increments.push(CellIncrement {
+            ends,
+            bulk,
+            pressure,
+            traction,
+        });
+        Ok(())
+    }
+
+    /// Cell centres.
+    pub fn x(&self) -> &[f64] {
+        &self.x
+    }
+
+    /// The number of increments.
+    pub fn len(&self) -> usize {
+        self.increments.len()
+    }
+
+    /// No increment recorded.
+    pub fn is_empty(&self) -> bool {
+        self.increments.is_empty()
+    }
+}
+
+fn same_length(field: &str, v: &[f64], cells: usize) -> Result<()> {
+    if v.len() == cells {
+        Ok(())
+    } else {
+        Err(Error::LengthMismatch {
+            field: field.into(),
+            length: v.len(),
+            expected: cells,
+            per: "one value per cell centre x",
+        })
+    }
+}
+
+/// A march's fields holding only what a traction is built from.
+fn fields<'a>(x: &'a [f64], pressure: &'a [f64], traction: &'a [f64]) -> Fields<'a> {
+    Fields {
+        x,
+        pressure,
+        traction,
+        slip: &[],
+        slip_increment: &[],
+    }
+}
+
+/// The steady cycle: its increments' tractions and what Ruiz needs.
 pub(super) struct SteadyCycle {
     /// The increments of the cycle, 1-based.
     pub steps: Vec<usize>,
@@ -20,8 +130,10 @@ pub(super) struct SteadyCycle {
     states: Vec<(usize, f64, Traction)>,
     /// Per cell, the largest `|q|` over the cycle.
     q_max: Vec<f64>,
-    /// The march's result (cells, per-cycle slip ranges).
-    result: MarchResult,
+    /// Cell centres.
+    cells: Vec<f64>,
+    /// Per cell, half its slip range over the cycle.
+    slip_amplitude: Vec<f64>,
     /// The largest contact half-width of the history: half the span of every contact it reaches
     /// (the half-width at the largest P without a moment on a symmetric profile).
     pub a_max: f64,
@@ -59,10 +171,7 @@ impl SteadyCycle {
                     Ok(t) => states.push((r.step, r.load.bulk(), t)),
                     Err(e) => failure = Some(e),
                 }
-                q_max.resize(f.x.len(), 0.0);
-                for (m, q) in q_max.iter_mut().zip(f.traction) {
-                    *m = m.max(q.abs());
-                }
+                track_q_max(&mut q_max, f.traction);
             }
         })?;
         if let Some(e) = failure {
@@ -73,14 +182,42 @@ impl SteadyCycle {
         } else {
             (0.5 * (upper - lower), 0.5 * (upper + lower))
         };
+        let slip_amplitude = result
+            .cycles
+            .last()
+            .map(|c| c.slip_range.iter().map(|r| 0.5 * r).collect())
+            .unwrap_or_else(|| vec![0.0; result.x.len()]);
         Ok(Self {
             steps: (start + 1..=start + spc).collect(),
             states,
             q_max,
-            result,
+            cells: result.x,
+            slip_amplitude,
             a_max,
             centre,
             material: contact.material,
+        })
+    }
+
+    /// The recorded `cycle`, its increments numbered from 1, the grid scaled on the contact
+    /// `[b1, b2]` given.
+    pub fn recorded(cycle: &CycleTractions, material: Material, contact: [f64; 2]) -> Result<Self> {
+        let mut states = Vec::with_capacity(cycle.len());
+        let mut q_max = Vec::new();
+        for (k, i) in cycle.increments.iter().enumerate() {
+            let t = Traction::from_march_ends(i.ends, &fields(&cycle.x, &i.pressure, &i.traction))?;
+            states.push((k + 1, i.bulk, t));
+            track_q_max(&mut q_max, &i.traction);
+        }
+        Ok(Self {
+            steps: (1..=cycle.len()).collect(),
+            states,
+            q_max,
+            cells: cycle.x.clone(),
+            slip_amplitude: cycle.slip_range.iter().map(|r| 0.5 * r).collect(),
+            a_max: 0.5 * (contact[1] - contact[0]),
+            centre: 0.5 * (contact[0] + contact[1]),
+            material,
         })
     }
 
@@ -98,6 +235,14 @@ impl SteadyCycle {
 
     fn step(&self, index: usize) -> usize {
         self.steps[index.min(self.steps.len() - 1)]
+    }
+}
+
+/// Each cell's largest `|q|` so far, `traction` the next increment's.
+fn track_q_max(q_max: &mut Vec<f64>, traction: &[f64]) {
+    q_max.resize(traction.len(), 0.0);
+    for (m, q) in q_max.iter_mut().zip(traction) {
+        *m = m.max(q.abs());
     }
 }
 
@@ -257,19 +402,14 @@ pub(super) struct Surface {
 /// Ruiz on the surface (Ruiz, Boddington and Chen, Exp. Mech. 24, 1984; Nowell and Hills, Wear
 /// 136, 1990), at the cell centres in contact at some increment: `F1 = max(tau delta)`,
 /// `F2 = max(sxx tau delta)`, `tau` the largest `|q|` over the cycle, `delta` half the
-/// peak-to-peak slip of the last cycle, `sxx` the largest surface `sxx` over the cycle.
+/// peak-to-peak slip of the cycle, `sxx` the largest surface `sxx` over the cycle.
 pub(super) fn ruiz(cycle: &SteadyCycle) -> Result<Surface> {
-    let result = &cycle.result;
+    let (cells, slip_amplitude) = (&cycle.cells, &cycle.slip_amplitude);
     let spc = cycle.steps.len();
-    let slip_amplitude: Vec<f64> = result
-        .cycles
-        .last()
-        .map(|c| c.slip_range.iter().map(|r| 0.5 * r).collect())
-        .unwrap_or_else(|| vec![0.0; result.x.len()]);
-    let inside: Vec<usize> = (0..result.x.len())
-        .filter(|&i| (result.x[i] - cycle.centre).abs() < cycle.a_max)
+    let inside: Vec<usize> = (0..cells.len())
+        .filter(|&i| (cells[i] - cycle.centre).abs() < cycle.a_max)
         .collect();
-    let x: Vec<f64> = inside.iter().map(|&i| result.x[i]).collect();
+    let x: Vec<f64> = inside.iter().map(|&i| cells[i]).collect();
     let surface = cycle.histories(&x, &vec![0.0; x.len()])?;
     let sxx = (0..spc)
         .map(|k| {

@@ -13,6 +13,7 @@ use super::gap::Grid;
 use super::marcher::{Cell, Marcher};
 use super::types::MarchOptions;
 use crate::error::{Error, Result};
+use crate::fatigue::CycleTractions;
 use crate::history::History;
 use crate::labels::Edge;
 use crate::load::LoadPoint;
@@ -39,6 +40,23 @@ pub struct Worn {
     base: Vec<f64>,
     approach: f64,
     slip_label: f64,
+    /// The unworn contact's ends under the cycle's load.
+    unworn: [f64; 2],
+    /// The contact ends and bulk stress of the last increment (a slide keeps them).
+    last: ([f64; 2], f64),
+    /// The last cycle's increments, when recording ([`Worn::record_tractions`]).
+    recorded: Option<Recorded>,
+}
+
+/// An increment as recorded: the contact ends, the bulk stress, the pressure and the shear
+/// traction of every cell.
+type CellState = ([f64; 2], f64, Vec<f64>, Vec<f64>);
+
+/// A cycle's increments as recorded, and the slip range over the cycle.
+#[derive(Default)]
+struct Recorded {
+    increments: Vec<CellState>,
+    slip_range: Vec<f64>,
 }
 
 impl Worn {
@@ -171,8 +189,10 @@ impl Worn {
         let unworn = contact.contact_at(&head)?;
         let (c, half) = (unworn.centre(), span * 1.01 * unworn.half_width());
         let mut marcher = Marcher::spanning(contact, [c - half, c + half], options)?;
+        let mut last = ([0.0; 2], 0.0);
         for load in ramp {
-            marcher.step(*load)?;
+            let r = marcher.step(*load)?;
+            last = ([r.ends[Edge::Left], r.ends[Edge::Right]], load.bulk());
         }
         let base = gap_at(contact, &marcher.x)?;
         let approach = elastic_approach(&mut marcher, &base, &head)?;
@@ -180,13 +200,30 @@ impl Worn {
             * contact.compliance().value()
             * contact.friction().value()
             * head.normal();
+        let ends = unworn.ends();
         Ok(Self {
             marcher,
             cycle,
             base,
             approach,
             slip_label,
+            unworn: [ends[Edge::Left], ends[Edge::Right]],
+            last,
+            recorded: None,
         })
+    }
+
+    /// From the next cycle on, keeps each cycle's tractions, increment by increment, for
+    /// [`WornCycle::tractions`] (the fatigue parameters at the checkpoints): a copy of the
+    /// cells' pressure and traction per increment, nothing while not recording.
+    pub fn record_tractions(&mut self) {
+        self.recorded.get_or_insert_with(Recorded::default);
+    }
+
+    /// The unworn contact's ends `[b1, b2]` under the cycle's load (the fatigue grid of every
+    /// checkpoint is scaled on it).
+    pub fn unworn_contact(&self) -> [f64; 2] {
+        self.unworn
     }
 }
 
@@ -257,12 +294,15 @@ impl WornCycle for Worn {
         self.marcher.set_gap(gap);
         self.marcher.take_pressure_slip();
         let (mut low, mut high) = (self.marcher.slip.clone(), self.marcher.slip.clone());
-        let mut ends = [0.0; 2];
+        if let Some(r) = &mut self.recorded {
+            r.increments.clear();
+        }
         for increment in self.cycle.clone() {
             match increment {
                 Increment::Load(load) => {
                     let report = self.marcher.step(load)?;
-                    ends = [report.ends[Edge::Left], report.ends[Edge::Right]];
+                    let ends = [report.ends[Edge::Left], report.ends[Edge::Right]];
+                    self.last = (ends, load.bulk());
                 }
                 Increment::Slide(distance) => self.marcher.slide(distance)?,
             }
@@ -270,8 +310,17 @@ impl WornCycle for Worn {
                 low[i] = low[i].min(self.marcher.slip[i]);
                 high[i] = high[i].max(self.marcher.slip[i]);
             }
+            if let Some(r) = &mut self.recorded {
+                let (ends, bulk) = self.last;
+                let (p, q) = (&self.marcher.pressure, &self.marcher.traction);
+                r.increments.push((ends, bulk, p.clone(), q.clone()));
+            }
         }
+        let ends = self.last.0;
         let slip_range: Vec<f64> = high.iter().zip(&low).map(|(h, l)| h - l).collect();
+        if let Some(r) = &mut self.recorded {
+            r.slip_range.clone_from(&slip_range);
+        }
         let w = self.marcher.width;
         let sticks: Vec<bool> = self
             .marcher
@@ -291,6 +340,18 @@ impl WornCycle for Worn {
             stick: best,
             contact: ends,
         })
+    }
+
+    fn tractions(&mut self) -> Result<Option<CycleTractions>> {
+        let Some(r) = &mut self.recorded else {
+            return Ok(None);
+        };
+        let mut cycle =
+            CycleTractions::new(self.marcher.x.clone(), std::mem::take(&mut r.slip_range))?;
+        for (ends, bulk, p, q) in r.increments.drain(..) {
+            cycle.push(ends, bulk, p, q)?;
+        }
+        Ok(Some(cycle))
     }
 }
 

@@ -4,6 +4,7 @@
 
 use super::{Checkpoint, CheckpointFields, Law, WearOptions, WearResult};
 use crate::error::{Error, Result};
+use crate::fatigue::CycleTractions;
 
 /// What one marched cycle over a worn gap gives the wear loop, one value per cell where a
 /// vector.
@@ -38,6 +39,12 @@ pub trait WornCycle {
     fn elastic_approach(&self) -> f64;
     /// Marches the next cycle with `depth` (both bodies, one value per cell) added to the gap.
     fn cycle(&mut self, depth: &[f64]) -> Result<CycleWear>;
+    /// The tractions of every increment of the last cycle, when the march keeps them
+    /// ([`crate::march::Worn::record_tractions`]); asked for at checkpoints only. None by
+    /// default.
+    fn tractions(&mut self) -> Result<Option<CycleTractions>> {
+        Ok(None)
+    }
 }
 
 /// Runs `options.cycles()` physical cycles: each simulated cycle marched by `worn`, its wear
@@ -94,10 +101,15 @@ pub fn run(
             cycle += jump;
             if cycle == target {
                 let point = checkpoint(&w, &depth, options.share(), worn.x(), cycle);
+                let tractions = worn.tractions().map_err(|e| Error::WearStopped {
+                    cycle,
+                    cause: Box::new(e),
+                })?;
                 let point = Checkpoint {
                     wear_volume: volume,
                     energy_per_cycle: cycle_energy,
                     dissipated_energy: energy,
+                    tractions,
                     ..point
                 };
                 observer(&point);
@@ -133,6 +145,7 @@ fn checkpoint(w: &CycleWear, depth: &[f64], share: f64, x: &[f64], cycle: u64) -
             traction: w.traction.clone(),
             slip_range: w.slip_range.clone(),
         },
+        tractions: None,
     }
 }
 

@@ -244,6 +244,10 @@ pub struct Checkpoint {
     pub slip_amplitude_max: f64,
     /// The fields of every cell.
     pub fields: CheckpointFields,
+    /// The tractions of every increment of the cycle, when the march recorded them
+    /// ([`crate::march::Worn::record_tractions`]): what [`crate::fatigue::analyse_cycle`]
+    /// evaluates.
+    pub tractions: Option<crate::fatigue::CycleTractions>,
 }
 
 /// The fields at a checkpoint, one value per cell.
