@@ -204,10 +204,10 @@ pub(super) fn check_slip_grows_with(
             }
         }
     }
-    if contact.profile.is_convex() {
-        if path.is_centred() || settled_by_bounds(contact, cycle, &halves, path) {
-            return Ok(());
-        }
+    if contact.profile.is_convex()
+        && (path.is_centred() || settled_by_bounds(contact, cycle, &halves, path))
+    {
+        return Ok(());
     }
     scan(contact, &halves, d_q, d_sigma, SAMPLES_PER_HALF, options)
 }
