@@ -31,7 +31,7 @@ use crate::normal_moment::NormalContact;
 /// Most solves spent on locating the boundaries of one sub-step.
 const MAX_SOLVES: usize = 16;
 /// A jump below this fraction of `f p_max` at the cell-level ends is no boundary to locate.
-const QUIET: f64 = 1e-2;
+const QUIET: f64 = 1e-4;
 
 /// A stick-slip boundary located inside its cell: the shear traction is continuous there and has
 /// a square root on the stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the

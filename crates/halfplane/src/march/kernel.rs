@@ -340,33 +340,33 @@ fn root_antiderivative(v: f64, d: f64, scale: f64, k: usize) -> f64 {
 mod tests {
     use super::*;
 
-    /// `-integral_lo^hi f(xi) ln(|xi - x|/l) dxi` by Gauss-Legendre on panels graded towards the
-    /// singular points (an independent reference for the closed forms).
+    /// `integral_lo^hi g` by Gauss-Legendre on panels graded geometrically towards both ends
+    /// (44 halvings), which resolves log and square-root end singularities: the independent
+    /// reference of these tests.
+    fn graded(lo: f64, hi: f64, g: &dyn Fn(f64) -> f64) -> f64 {
+        let mid = 0.5 * (lo + hi);
+        let mut sum = 0.0;
+        for (end, towards) in [(lo, mid), (hi, mid)] {
+            let mut outer = towards;
+            for _ in 0..44 {
+                let inner = end + 0.5 * (outer - end);
+                let (p, q) = (inner.min(outer), inner.max(outer));
+                sum += gauss_legendre(p, q, |t| [g(t)])[0];
+                outer = inner;
+            }
+        }
+        sum
+    }
+
+    /// `-integral_lo^hi f(xi) ln(|xi - x|/l) dxi` by [`graded`] panels between the singular points.
     fn brute(lo: f64, hi: f64, x: f64, scale: f64, f: impl Fn(f64) -> f64, breaks: &[f64]) -> f64 {
         let mut points = vec![lo, hi];
         points.extend(breaks.iter().copied().filter(|b| *b > lo && *b < hi));
         points.sort_by(f64::total_cmp);
-        let mut sum = 0.0;
-        for w in points.windows(2) {
-            let (a, b) = (w[0], w[1]);
-            // Geometric grading towards both ends (singularities sit at panel ends).
-            let mid = 0.5 * (a + b);
-            for (end, towards) in [(a, mid), (b, mid)] {
-                let mut outer = towards;
-                for _ in 0..44 {
-                    let inner = end + 0.5 * (outer - end);
-                    let (p, q) = if inner < outer {
-                        (inner, outer)
-                    } else {
-                        (outer, inner)
-                    };
-                    let [v] = gauss_legendre(p, q, |t| [-f(t) * ((t - x).abs() / scale).ln()]);
-                    sum += v;
-                    outer = inner;
-                }
-            }
-        }
-        sum
+        points
+            .windows(2)
+            .map(|w| graded(w[0], w[1], &|t| -f(t) * ((t - x).abs() / scale).ln()))
+            .sum()
     }
 
     #[test]
@@ -432,39 +432,13 @@ mod tests {
             }
             // The moments against the same quadrature.
             for (k, about) in [(0, 0.3), (1, 0.3), (1, 0.0)] {
-                let [m] = gauss_legendre(lo, hi, |t| [e.value(t) * (t - about).powi(k as i32)]);
-                let m = if matches!(shape, Shape::Root { .. }) {
-                    // The square root's end singularity: graded panels.
-                    brute_moment(lo, hi, |t| e.value(t) * (t - about).powi(k as i32))
-                } else {
-                    m
-                };
+                let m = graded(lo, hi, &|t| e.value(t) * (t - about).powi(k as i32));
                 assert!(
                     (e.moment(k, about) - m).abs() < 1e-13,
                     "{shape:?} moment {k}"
                 );
             }
         }
-    }
-
-    fn brute_moment(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {
-        let mid = 0.5 * (lo + hi);
-        let mut sum = 0.0;
-        for (end, towards) in [(lo, mid), (hi, mid)] {
-            let mut outer = towards;
-            for _ in 0..44 {
-                let inner = end + 0.5 * (outer - end);
-                let (p, q) = if inner < outer {
-                    (inner, outer)
-                } else {
-                    (outer, inner)
-                };
-                let [v] = gauss_legendre(p, q, |t| [f(t)]);
-                sum += v;
-                outer = inner;
-            }
-        }
-        sum
     }
 
     #[test]

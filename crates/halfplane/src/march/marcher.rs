@@ -144,7 +144,11 @@ impl Marcher {
         let scale = 2.0 * (upper - lower);
         let row = kernel::cell_row(n, width, scale);
         let dense = (options.solver() == LinearSolver::Dense).then(|| kernel::dense_matrix(&row));
-        let kernel = Toeplitz::new(row)?.with_slopes(&kernel::slope_column(n, width));
+        let mut kernel = Toeplitz::new(row)?;
+        if options.sub_cell() {
+            // The slopes' product only serves the located boundaries (`evaluate.rs`).
+            kernel = kernel.with_slopes(&kernel::slope_column(n, width));
+        }
         let zeros = vec![0.0; n];
         Ok(Self {
             contact: contact.clone(),
