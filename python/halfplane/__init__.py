@@ -9,8 +9,9 @@ The same analyses as the ``halfplane`` command, with the same numbers:
   results are typed, read-only records built from the command's report structs (no text in
   between), with a ``repr`` for the terminal and an HTML table for notebooks;
 - :func:`stress` (``stress``: the stresses below the contact at an increment) and :func:`fatigue`
-  (``fatigue``: initiation parameters over the steady cycle); :func:`match` (``match``: the
-  test that reproduces a prototype's contact-edge state);
+  (``fatigue``: initiation parameters over the steady cycle); :func:`crack` (``crack``: will a
+  crack grow or arrest); :func:`match` (``match``: the test that reproduces a prototype's
+  contact-edge state);
 - :func:`steady_batch`: a million cases in one call on every core; :mod:`halfplane.dask` on a
   cluster.
 
@@ -32,6 +33,7 @@ import pandas as pd
 
 from . import _halfplane
 from ._batch import STEADY_COLUMNS, steady_batch
+from ._crack import CrackResult, crack
 from ._halfplane import Case, read_case
 from ._matching import MatchResult, MatchSide, Mismatch, match
 from ._records import Edges, LoadPoint, PerPoint, Profile, Record, Units, _frame
@@ -156,6 +158,7 @@ __all__ = [
     "AsymptoticStickZone",
     "Case",
     "ContactState",
+    "CrackResult",
     "Criteria",
     "EdgeIntensities",
     "Edges",
@@ -180,6 +183,7 @@ __all__ = [
     "StickZone",
     "StressResult",
     "Units",
+    "crack",
     "evolve",
     "fatigue",
     "march",

@@ -14,8 +14,8 @@ from .errors import InputError
 #: The numeric input columns, in the order the native solver takes them: the documented input
 #: columns without ``profile`` (passed as codes).
 _NUMERIC = [c for c in _halfplane.STEADY_INPUT_COLUMNS if c != "profile"]
-#: Profile parameters: a column no row uses may be absent.
-_OPTIONAL = set(_halfplane.SHAPE_COLUMNS)
+#: Profile parameters (a column no row uses may be absent) and the moments (0 when absent).
+_OPTIONAL = set(_halfplane.SHAPE_COLUMNS) | {"moment1", "moment2"}
 
 #: Output columns, in order (``regime`` first, ``error`` last).
 STEADY_COLUMNS: List[str] = list(_halfplane.STEADY_COLUMNS)
@@ -145,7 +145,9 @@ def steady_batch(table: Table, threads: Optional[int] = None) -> pd.DataFrame:
       the edge ``radius`` R) or ``"power-law"`` (g = B|x|^k: ``coefficient`` B, ``exponent`` k);
       parameters a row's profile does not use must be NaN, or the column absent;
     - ``normal1, shear1, bulk1, normal2, shear2, bulk2``: P (> 0) and Q per unit thickness
-      (N/mm) and the bulk tension sigma (MPa) at the cycle's two ends, in either order.
+      (N/mm) and the bulk tension sigma (MPa) at the cycle's two ends, in either order;
+    - optional ``moment1, moment2``: the moment M of the contact pressure about x = 0 at each end
+      (N mm/mm; the pressure's resultant acts at x = M/P), 0 where the column is absent.
 
     Signs as in the case files: P > 0 compresses; Q and sigma positive as in the paper's Figure 1;
     x positive in the direction of positive Q.

@@ -17,6 +17,7 @@ __all__ = [
     "__version__",
     "_case_from_state",
     "_error_examples",
+    "crack_report",
     "evolve_report",
     "fatigue_report",
     "march_report",
@@ -59,6 +60,8 @@ class Case:
         cells: Optional[int] = None,
         slip_tolerance: Optional[float] = None,
         units: Optional[Mapping[str, str]] = None,
+        left_radius: Optional[float] = None,
+        right_radius: Optional[float] = None,
     ) -> Case: ...
     @staticmethod
     def from_toml(text: str, base_dir: Union[None, str, PathLike[str]] = None) -> Case: ...
@@ -79,6 +82,8 @@ class Case:
     def point1(self) -> Optional[Tuple[float, float, float]]: ...
     @property
     def point2(self) -> Optional[Tuple[float, float, float]]: ...
+    @property
+    def moments(self) -> Optional[Tuple[float, float]]: ...
     @property
     def increments(self) -> Optional[int]: ...
     @property
@@ -110,6 +115,9 @@ def stress_points(
 def fatigue_report(
     case: Case, cells: Optional[int] = None
 ) -> Tuple[Dict[str, Any], List[str]]: ...
+def crack_report(
+    case: Case, cells: Optional[int] = None, overrides: Optional[Mapping[str, Any]] = None
+) -> Dict[str, Any]: ...
 def match_report(
     case: Case,
     profile: str,
@@ -121,4 +129,5 @@ def match_report(
     poisson_ratio: Optional[float] = None,
     friction: Optional[float] = None,
     exact: bool = False,
+    edge: Optional[str] = None,
 ) -> Tuple[Dict[str, Any], Case, str, List[str]]: ...

@@ -77,8 +77,9 @@ class MatchResult(Record):
     """The report of ``halfplane match --json`` as typed attributes (see docs/matching.md for
     every field, its unit and sign):
 
-    - ``mode`` (``"asymptotic"`` or ``"exact"``) and ``matched`` (the matched quantities in
-      words);
+    - ``mode`` (``"asymptotic"`` or ``"exact"``), ``matched`` (the matched quantities in
+      words) and ``matched_edge`` (``"left"`` or ``"right"``: the prototype's edge whose K_N the
+      test takes, the same at both edges without a moment on a symmetric prototype);
     - ``prototype``, ``test``: each contact (:class:`MatchSide`: regime, profile, loads,
       half-widths);
     - ``normal_intensity`` (K_N at each point), ``shear_intensity`` and ``equivalent_shear``
@@ -97,6 +98,7 @@ class MatchResult(Record):
 
     mode: str
     matched: str
+    matched_edge: str
     prototype_file: Optional[str]
     test_file: Optional[str]
     prototype: MatchSide
@@ -117,6 +119,7 @@ class MatchResult(Record):
         return cls(
             mode=str(data["mode"]),
             matched=str(data["matched"]),
+            matched_edge=str(data["matched_edge"]),
             prototype_file=None,
             test_file=None,
             prototype=MatchSide._from(data["prototype"]),
@@ -192,6 +195,7 @@ def match(
     poisson_ratio: Optional[float] = None,
     friction: Optional[float] = None,
     exact: bool = False,
+    edge: Optional[str] = None,
 ) -> MatchResult:
     """The test loads that reproduce the prototype's contact-edge state, as
     ``halfplane match CASE --profile PROFILE ... --json`` (the same test contact, report and test
@@ -203,6 +207,9 @@ def match(
     length unit. ``youngs_modulus``, ``poisson_ratio`` and ``friction`` default to the
     prototype's. ``exact=False`` matches the asymptotic edge intensities (K_N at both points, K_T
     at both edges at both points); ``exact=True`` matches the exact slip zones at point2.
+    Under a moment (or on an asymmetric prototype) K_N differs at the prototype's two edges and
+    the test, without a moment, takes the K_N of ``edge`` (``"left"`` or ``"right"``; default
+    None: the edge whose K_T changes more over the cycle), as ``--edge``.
 
     Raises :class:`InputError` for a missing or invalid test option (the message names it as the
     command's option, e.g. ``--radius``) and :class:`OutsideAnalysisError` where the prototype or
@@ -227,7 +234,7 @@ def match(
             except (TypeError, ValueError):
                 raise InputError(f"invalid {name} = {value!r}: must be a number") from None
     report, test_case, toml, notes = _halfplane.match_report(
-        prototype_case, profile, exact=bool(exact), **numbers
+        prototype_case, profile, exact=bool(exact), edge=edge, **numbers
     )
     for note in notes:
         warnings.warn(note, HalfplaneWarning, stacklevel=2)

@@ -159,9 +159,10 @@ class Units(Record):
 class Profile(Record):
     """The indenter's profile: ``kind`` (``"hertz"``, ``"flat-rounded"``, ``"power-law"`` or
     ``"tabulated"``), its parameters (``radius`` R, or the edge radius of a flat-rounded punch;
-    ``flat_half_width`` b; ``coefficient`` B and ``exponent`` k of g = B|x|^k; ``rows`` of a
-    table), None where the kind has none (and then absent from ``to_dict()``), and ``kinks``
-    (the |x| of slope discontinuities)."""
+    ``left_radius`` and ``right_radius`` instead for a flat-rounded punch whose edge radii
+    differ; ``flat_half_width`` b; ``coefficient`` B and ``exponent`` k of g = B|x|^k; ``rows``
+    of a table), None where the kind has none (and then absent from ``to_dict()``), and
+    ``kinks`` (the x of slope discontinuities: their |x| for a symmetric profile)."""
 
     _OMIT_NONE: ClassVar[Tuple[str, ...]] = (
         "radius",
@@ -169,6 +170,8 @@ class Profile(Record):
         "coefficient",
         "exponent",
         "rows",
+        "left_radius",
+        "right_radius",
     )
 
     kind: str
@@ -178,6 +181,8 @@ class Profile(Record):
     exponent: Optional[float]
     rows: Optional[int]
     kinks: Tuple[float, ...]
+    left_radius: Optional[float] = None
+    right_radius: Optional[float] = None
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> Profile:
@@ -190,20 +195,29 @@ class Profile(Record):
             exponent=_opt_float(data.get("exponent")),
             rows=None if rows is None else int(rows),
             kinks=tuple(float(k) for k in data["kinks"]),
+            left_radius=_opt_float(data.get("left_radius")),
+            right_radius=_opt_float(data.get("right_radius")),
         )
 
 
 @dataclass(frozen=True, eq=False)
 class LoadPoint(Record):
-    """A load: ``normal`` P (> 0 compresses), ``shear`` Q and ``bulk`` tension sigma."""
+    """A load: ``normal`` P (> 0 compresses), ``shear`` Q, ``bulk`` tension sigma and ``moment`` M
+    (the pressure's moment about x = 0; its resultant acts at x = M/P)."""
 
     normal: float
     shear: float
     bulk: float
+    moment: float = 0.0
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> LoadPoint:
-        return cls(_float(data["normal"]), _float(data["shear"]), _float(data["bulk"]))
+        return cls(
+            _float(data["normal"]),
+            _float(data["shear"]),
+            _float(data["bulk"]),
+            _float(data.get("moment", 0.0)),
+        )
 
 
 def _num(value: Optional[float]) -> str:

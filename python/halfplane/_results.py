@@ -55,20 +55,52 @@ class Criteria(Record):
 @dataclass(frozen=True, eq=False)
 class ContactState(Record):
     """The contact at point1 and point2 as given: ``half_width_1``, ``_2`` (a) and
-    ``normal_intensity_1``, ``_2`` (K_N)."""
+    ``normal_intensity_1``, ``_2`` (K_N; None where the two edges' K_N differ, under a moment or on
+    an asymmetric profile); the ends ``left_1``, ``right_1``, ``left_2``, ``right_2`` (signed x of
+    b1 and b2), K_N at each edge (``normal_intensity_left_1`` ...), the pad's rotations
+    ``rotation_1``, ``_2`` (the gap gains theta x) and whether each end lies on the flat of a
+    flat-rounded pad (``on_flat_left_1`` ...)."""
 
     half_width_1: float
     half_width_2: float
-    normal_intensity_1: float
-    normal_intensity_2: float
+    normal_intensity_1: Optional[float]
+    normal_intensity_2: Optional[float]
+    left_1: float = math.nan
+    right_1: float = math.nan
+    left_2: float = math.nan
+    right_2: float = math.nan
+    normal_intensity_left_1: float = math.nan
+    normal_intensity_right_1: float = math.nan
+    normal_intensity_left_2: float = math.nan
+    normal_intensity_right_2: float = math.nan
+    rotation_1: float = 0.0
+    rotation_2: float = 0.0
+    on_flat_left_1: bool = False
+    on_flat_right_1: bool = False
+    on_flat_left_2: bool = False
+    on_flat_right_2: bool = False
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> ContactState:
         return cls(
-            _float(data["half_width_1"]),
-            _float(data["half_width_2"]),
-            _float(data["normal_intensity_1"]),
-            _float(data["normal_intensity_2"]),
+            half_width_1=_float(data["half_width_1"]),
+            half_width_2=_float(data["half_width_2"]),
+            normal_intensity_1=_opt_float(data["normal_intensity_1"]),
+            normal_intensity_2=_opt_float(data["normal_intensity_2"]),
+            left_1=_float(data["left_1"]),
+            right_1=_float(data["right_1"]),
+            left_2=_float(data["left_2"]),
+            right_2=_float(data["right_2"]),
+            normal_intensity_left_1=_float(data["normal_intensity_left_1"]),
+            normal_intensity_right_1=_float(data["normal_intensity_right_1"]),
+            normal_intensity_left_2=_float(data["normal_intensity_left_2"]),
+            normal_intensity_right_2=_float(data["normal_intensity_right_2"]),
+            rotation_1=_float(data["rotation_1"]),
+            rotation_2=_float(data["rotation_2"]),
+            on_flat_left_1=bool(data["on_flat_left_1"]),
+            on_flat_right_1=bool(data["on_flat_right_1"]),
+            on_flat_left_2=bool(data["on_flat_left_2"]),
+            on_flat_right_2=bool(data["on_flat_right_2"]),
         )
 
 

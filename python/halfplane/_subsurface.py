@@ -39,8 +39,10 @@ class StressResult:
     ``x`` runs in the sense of positive Q, ``z`` is the depth, and the surface shear traction is
     the one the other body exerts on this one, positive in +x (docs/stress.md). ``step`` is the
     increment used (1-based) and ``normal``, ``shear``, ``bulk``, ``half_width`` its load and
-    contact half-width; ``x`` and ``z`` are the points, broadcast to the same shape.
-    ``to_dict()`` gives them all, arrays included."""
+    contact half-width, ``moment`` M and ``contact_left``, ``contact_right`` the contact's ends
+    (b1, b2: ``-half_width`` and ``half_width`` without a moment on a symmetric profile); ``x``
+    and ``z`` are the points, broadcast to the same shape. ``to_dict()`` gives them all, arrays
+    included."""
 
     def __init__(
         self,
@@ -54,6 +56,9 @@ class StressResult:
         self.shear: float = float(data["shear"])
         self.bulk: float = float(data["bulk"])
         self.half_width: float = float(data["half_width"])
+        self.moment: float = float(data.get("moment", 0.0))
+        self.contact_left: float = float(data.get("contact_left", -self.half_width))
+        self.contact_right: float = float(data.get("contact_right", self.half_width))
         self.sxx: FloatArray = data["sxx"].reshape(shape)
         self.szz: FloatArray = data["szz"].reshape(shape)
         self.syy: FloatArray = data["syy"].reshape(shape)

@@ -57,13 +57,14 @@ def case_of(row: pd.Series) -> halfplane.Case:
         for k in ("radius", "flat_half_width", "coefficient", "exponent")
         if not math.isnan(row[k])
     }
+    moments = (row.get("moment1", 0.0), row.get("moment2", 0.0))
     return halfplane.Case(
         youngs_modulus=float(row.youngs_modulus),
         poisson_ratio=float(row.poisson_ratio),
         friction=float(row.friction),
         profile=row.profile,
-        point1=(row.normal1, row.shear1, row.bulk1),
-        point2=(row.normal2, row.shear2, row.bulk2),
+        point1=(row.normal1, row.shear1, row.bulk1, moments[0]),
+        point2=(row.normal2, row.shear2, row.bulk2, moments[1]),
         **params,
     )
 
@@ -72,7 +73,26 @@ def test_rows_equal_single_solves():
     # The batch runs the same analysis as `steady` on the same values, so the only allowed
     # difference is none; 1e-12 relative is the stated bound and leaves room for nothing
     # but rounding.
-    table = mixed_table(300)
+    check_rows_against_single_solves(mixed_table(300))
+
+
+@pytest.mark.filterwarnings("ignore::halfplane.HalfplaneWarning")
+def test_rows_with_moments_equal_single_solves():
+    # moment1, moment2: the pressure's centroid M/P within +-0.15 mm of the centre (contacts of
+    # about 0.5 to 1 mm half-width), so that every regime and some cycles outside the analysis
+    # occur; a table without the columns has no moment (the test above).
+    table = mixed_table(200, seed=5)
+    rng = np.random.default_rng(6)
+    table["moment1"] = rng.uniform(-0.15, 0.15, len(table)) * table.normal1
+    table["moment2"] = rng.uniform(-0.15, 0.15, len(table)) * table.normal2
+    check_rows_against_single_solves(table)
+    # A moment moves the contact: the batch's half-widths are those of the moved contacts.
+    plain = halfplane.steady_batch(table.drop(columns=["moment1", "moment2"]))
+    moved = halfplane.steady_batch(table)
+    assert not np.allclose(plain.half_width_1, moved.half_width_1, equal_nan=True)
+
+
+def check_rows_against_single_solves(table: pd.DataFrame) -> None:
     out = halfplane.steady_batch(table)
     assert list(out.columns) == halfplane.STEADY_COLUMNS
     regimes = set()

@@ -375,3 +375,24 @@ def test_without_matplotlib_the_module_imports_and_a_call_says_how_to_install(mo
     monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
     with pytest.raises(ImportError, match=r'pip install "./python\[plot\]"'):
         plot.load_space(hertz[0])
+
+
+def test_crack_growth_draws_the_ranges_and_the_threshold_on_log_axes():
+    result = halfplane.crack(
+        halfplane.read_case(ROOT / "examples" / "crack.toml"),
+        lengths={"from": 0.002, "to": 0.3, "count": 8},
+        cells=200,
+    )
+    ax = plot.crack_growth(result)
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    rows = result.rows
+    np.testing.assert_array_equal(lines["ΔK effective"].get_xdata(), rows["length"])
+    np.testing.assert_array_equal(lines["ΔK effective"].get_ydata(), rows["delta_k_eff"])
+    np.testing.assert_array_equal(
+        lines["threshold ΔK_th(l) (El Haddad)"].get_ydata(), rows["threshold"]
+    )
+    assert lines["threshold ΔK_th(l) (El Haddad)"].get_linestyle() == "--"
+    assert result.intensity_unit in ax.get_ylabel() and "mm" in ax.get_xlabel()
+    assert result.verdict in ax.get_title()
+    plt.close("all")

@@ -126,6 +126,16 @@ pub fn march_units(cells: usize, increments: usize) -> f64 {
     (cells as f64).powi(2) * increments as f64
 }
 
+/// Seconds of one core per crack length and increment of the steady cycle (`halfplane crack`:
+/// measured 0.2 ms at f = 0 and 0.35 ms at f = 0.3, 40 points per component; BENCHMARKS.md).
+pub const CRACK_SECONDS_PER_UNIT: f64 = 4e-4;
+
+/// The core time a crack analysis over `lengths` lengths and `increments` increments per cycle is
+/// estimated to take (the march aside).
+pub fn crack_seconds(lengths: usize, increments: usize) -> f64 {
+    CRACK_SECONDS_PER_UNIT * lengths as f64 * increments as f64
+}
+
 /// The core time a march is estimated to take.
 pub fn march_seconds(cells: usize, increments: usize) -> f64 {
     march_units(cells, increments) * MARCH_SECONDS_PER_UNIT

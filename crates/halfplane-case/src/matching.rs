@@ -44,6 +44,9 @@ pub struct TestOptions {
     /// The exact match (K_N at both points, the exact slip zones at point2) instead of the
     /// asymptotic one.
     pub exact: bool,
+    /// The prototype's edge whose K_N the test takes (under a moment, or on an asymmetric
+    /// profile, the two edges' differ); `None`: the edge whose K_T changes more over the cycle.
+    pub edge: Option<halfplane::Edge>,
 }
 
 /// What `match` runs on.
@@ -59,6 +62,8 @@ pub struct MatchConfig {
     pub test: Contact,
     /// Asymptotic or exact.
     pub mode: Mode,
+    /// The prototype's edge whose K_N the test takes (`None`: the edge whose K_T changes more).
+    pub edge: Option<halfplane::Edge>,
     /// The test case file to name (the mapped history's table is named after it).
     pub output: PathBuf,
 }
@@ -87,6 +92,7 @@ impl MatchConfig {
             prototype_path,
             carried,
             mode: mode(test),
+            edge: test.edge,
             output,
         })
     }
@@ -199,8 +205,13 @@ pub struct Matched {
 /// prints, which the Python package returns too.
 pub fn compute(config: &MatchConfig) -> Result<Matched> {
     let cycle = config.prototype.cycle()?;
-    let report =
-        matching::match_cycle(&config.prototype.contact, &cycle, &config.test, config.mode)?;
+    let report = matching::match_cycle_at(
+        &config.prototype.contact,
+        &cycle,
+        &config.test,
+        config.mode,
+        config.edge,
+    )?;
     let mut notes: Vec<String> = report
         .warnings
         .iter()
@@ -238,10 +249,11 @@ fn mapped_history(
         return Ok(Some((section.clone(), None)));
     }
     let history: History = config.prototype.history()?;
-    let rows = matching::map_history(
+    let rows = matching::map_history_at(
         &config.prototype.contact,
         &report.test.contact,
         history.loads(),
+        report.prototype.edge,
     )?;
     if config.mode == Mode::Exact {
         notes.push(

@@ -67,6 +67,9 @@ pub fn report(
         shear: state.load.shear(),
         bulk,
         half_width: state.half_width,
+        moment: state.load.moment(),
+        contact_left: state.ends.left,
+        contact_right: state.ends.right,
         points,
         units: units.clone(),
     })

@@ -56,6 +56,8 @@ pub enum Quantity {
     Energy,
     /// Moment per unit thickness (M): force times length per length, written "N mm/mm".
     Moment,
+    /// Volume per unit thickness (worn volume): a length squared, written "mm^2".
+    Area,
 }
 
 impl Units {
@@ -75,6 +77,7 @@ impl Units {
             Quantity::Energy | Quantity::Moment => {
                 format!("{} {}/{}", self.force, self.length, self.length)
             }
+            Quantity::Area => format!("{}^2", self.length),
         }
     }
 

@@ -45,6 +45,10 @@ pub enum Command {
     /// last cycle of [history], with crack-face contact, against El Haddad's short-crack
     /// threshold from [fatigue] threshold and endurance_range; verdict over the lengths.
     Crack(CrackArgs),
+    /// Fretting wear over [wear] cycles (Archard or dissipated-energy law, cycle jumping):
+    /// worn volume, depth, energy, contact and stick zone at each checkpoint; --fields writes the
+    /// worn profile, pressure, traction and slip range of each.
+    Wear(WearArgs),
     /// Runs every row of a design (grid, random or Latin hypercube) over numeric fields of a case:
     /// the steady state (or a march) of each, on every core, streamed to CSV or Parquet.
     Sweep(SweepArgs),
@@ -143,6 +147,23 @@ pub struct MarchArgs {
     /// to write more than 100 GB (README, "Size limits").
     #[arg(long)]
     pub no_size_limit: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct WearArgs {
+    /// Case file (TOML) with [material], [friction], [profile], [history] (one cycle, or kind =
+    /// "sliding") and [wear], and optionally [solver] and [units].
+    pub case: PathBuf,
+    // csv: one row per checkpoint; table: the run, then the checkpoints.
+    #[command(flatten)]
+    pub format: FormatArgs,
+    /// Write each checkpoint's fields (x, depth, depth_pad, depth_specimen, pressure, traction,
+    /// slip_range) as DIR/checkpoint_CYCLE.csv.
+    #[arg(long, value_name = "DIR")]
+    pub fields: Option<PathBuf>,
+    /// Cells across the grid (overrides [solver] cells; default 400).
+    #[arg(long)]
+    pub cells: Option<usize>,
 }
 
 #[derive(Args, Debug)]
@@ -255,6 +276,9 @@ pub enum PlotCommand {
     /// Surface sxx at four points of the steady cycle and Ruiz F2 along x (needs a cyclic
     /// [history]).
     SurfaceProfiles(SurfaceProfilesArgs),
+    /// A crack's stress intensity ranges against its length with the short-crack threshold
+    /// (log-log), beside the sxx map with the crack drawn (needs what `halfplane crack` needs).
+    Crack(SurfaceProfilesArgs),
     /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
     /// filled-contour map of any numeric column with a colour bar (takes the sweep's output, not a
     /// case).
@@ -449,6 +473,20 @@ pub struct TestArgs {
     /// both points, the asymptotic match).
     #[arg(long)]
     pub exact: bool,
+    /// Under a moment (or on an asymmetric prototype) K_N differs at the prototype's two edges,
+    /// and a test without a moment has one: the edge whose K_N the test takes (default: the
+    /// edge whose K_T changes more over the cycle).
+    #[arg(long, value_enum)]
+    pub edge: Option<MatchEdge>,
+}
+
+/// A prototype's edge, for `--edge`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MatchEdge {
+    /// The edge at smaller x (b1).
+    Left,
+    /// The edge at larger x (b2).
+    Right,
 }
 
 impl TestArgs {
@@ -468,6 +506,10 @@ impl TestArgs {
             poisson_ratio: self.poisson_ratio,
             friction: self.friction,
             exact: self.exact,
+            edge: self.edge.map(|e| match e {
+                MatchEdge::Left => halfplane::Edge::Left,
+                MatchEdge::Right => halfplane::Edge::Right,
+            }),
         }
     }
 }
@@ -508,8 +550,9 @@ pub struct DesignMapArgs {
     /// Column on the y axis (a varied path).
     #[arg(long)]
     pub y: String,
-    /// Column that colours the map: regime (a regime map) or any numeric column, e.g.
-    /// slip_right_1 (filled contours with a colour bar).
+    /// Column that colours the map: regime (a regime map), crack.verdict (a crack-arrest map of
+    /// a crack sweep) or any numeric column, e.g. slip_right_1 (filled contours with a colour
+    /// bar).
     #[arg(long, default_value = "regime")]
     pub color: String,
     /// Keep only the rows where PATH equals VALUE, to fix a path the map does not show

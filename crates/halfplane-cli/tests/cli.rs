@@ -117,6 +117,9 @@ fn case_with(name: &str, text: &str, table: Option<&str>) -> ScratchFile {
 
 const GOOD: &str = REFERENCE_CASE;
 
+/// g = x^2/100 (Hertz, R = 50) tabulated over both sides, -1 to 1 by 0.05.
+const MIRRORED_PARABOLA: &str = "x,g\n-1,0.01\n-0.75,0.005625\n-0.5,0.0025\n-0.25,0.000625\n0,0\n0.25,0.000625\n0.5,0.0025\n0.75,0.005625\n1,0.01\n";
+
 fn tabulated(table_line: &str) -> String {
     GOOD.replace(
         "kind = \"hertz\"\nradius = 50.0",
@@ -291,6 +294,38 @@ fn bad_input_names_the_field_and_the_valid_range() {
                 "halfplane march",
             ],
         ),
+        (
+            "moment-nan",
+            GOOD.replace("bulk = -20.0 }", "bulk = -20.0, moment = nan }"),
+            None,
+            &["cycle.point1.moment", "finite"],
+        ),
+        (
+            // A two-sided table over [-1, 1] (Hertz R = 50 sampled): at P = 1400 a moment of 900
+            // would put the contact's right end past x = 1.
+            "moment-beyond-table",
+            tabulated("file = \"p.csv\"").replace("bulk = 20.0 }", "bulk = 20.0, moment = 900.0 }"),
+            Some(MIRRORED_PARABOLA),
+            &["cycle.point2.moment = 900", "at normal load P = 1400", "the moment must be from"],
+        ),
+        (
+            "one-radius",
+            GOOD.replace(
+                "kind = \"hertz\"\nradius = 50.0",
+                "kind = \"flat-rounded\"\nflat_half_width = 0.3\nleft_radius = 40.0",
+            ),
+            None,
+            &["profile.right_radius", "left_radius"],
+        ),
+        (
+            "three-radii",
+            GOOD.replace(
+                "kind = \"hertz\"\nradius = 50.0",
+                "kind = \"flat-rounded\"\nflat_half_width = 0.3\nradius = 50.0\nleft_radius = 40.0\nright_radius = 60.0",
+            ),
+            None,
+            &["profile.radius", "not both"],
+        ),
     ];
     for (name, text, table, needles) in cases {
         let path = case_with(name, &text, table);
@@ -302,7 +337,12 @@ fn bad_input_names_the_field_and_the_valid_range() {
             stdout(&o)
         );
         assert!(!err.contains("panicked"), "{name}: panicked: {err}");
-        assert!(!stdout(&o).contains("NaN"), "{name}");
+        assert_eq!(o.status.code(), Some(2), "{name}: exit status");
+        assert!(
+            stdout(&o).is_empty(),
+            "{name}: printed a result: {}",
+            stdout(&o)
+        );
         for needle in needles {
             assert!(
                 err.contains(needle),

@@ -84,6 +84,27 @@ fn bad_crack_input_exits_2_naming_the_field() {
             "",
             "fatigue.threshold and fatigue.endurance_range",
         ),
+        // A point below the surface: the crack starts on the surface, at an x.
+        (
+            "angle = 0.0",
+            "angle = 0.0\nposition = [0.1, 0.05]",
+            "crack.position = [0.1, 0.05]",
+        ),
+        (
+            "angle = 0.0",
+            "angle = \"critical-plane\"\ninitiation_parameter = \"crossland\"",
+            "crack.initiation_parameter = \"crossland\"",
+        ),
+        (
+            "angle = 0.0",
+            "angle = \"critical-plane\"\ninitiation_parameter = \"swat\"",
+            "crack.initiation_parameter = \"swat\"",
+        ),
+        (
+            "angle = 0.0",
+            "angle = 10.0\ninitiation_parameter = \"swt\"",
+            "crack.initiation_parameter is used only with angle = \"critical-plane\"",
+        ),
     ];
     for (from, to, expect) in cases {
         assert!(base.contains(from), "{from}");
@@ -95,6 +116,20 @@ fn bad_crack_input_exits_2_naming_the_field() {
         assert!(e.contains(expect), "{to}: {e}");
         assert!(!e.contains("panicked"), "{e}");
     }
+    // No [fatigue] section at all: the threshold's constants are missing.
+    let path = dir.join("no-fatigue.toml");
+    let (start, end) = (
+        base.find("[fatigue]").unwrap(),
+        base.find("[crack]").unwrap(),
+    );
+    std::fs::write(&path, format!("{}{}", &base[..start], &base[end..])).unwrap();
+    let o = run(&["crack", path.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("fatigue.threshold and fatigue.endurance_range"),
+        "{}",
+        stderr(&o)
+    );
     // No [crack] section at all.
     let path = dir.join("none.toml");
     let cut = base.find("[crack]").unwrap();
@@ -106,4 +141,28 @@ fn bad_crack_input_exits_2_naming_the_field() {
         "{}",
         stderr(&o)
     );
+}
+
+#[test]
+fn critical_plane_angle_is_reported() {
+    // angle = "critical-plane" takes the SWT plane at the mouth (here the trailing edge, where
+    // the surface is free of traction at the largest load and the plane is close to normal);
+    // the report carries the angle it took, strictly inside (-90, 90).
+    let dir = scratch("crack-plane");
+    let base = std::fs::read_to_string(examples().join("crack.toml")).unwrap();
+    let case = base
+        .replacen(
+            "angle = 0.0",
+            "angle = \"critical-plane\"\ninitiation_parameter = \"findley\"",
+            1,
+        )
+        .replacen("count = 20", "count = 4", 1);
+    let path = dir.join("case.toml");
+    std::fs::write(&path, case).unwrap();
+    let o = run(&["crack", path.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let angle = v["angle"].as_f64().unwrap();
+    assert!(angle.abs() < 90.0, "{angle}");
+    assert_eq!(v["rows"].as_array().unwrap().len(), 4);
 }

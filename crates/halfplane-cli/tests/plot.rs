@@ -174,3 +174,42 @@ fn bad_plot_requests_are_clear_errors() {
         }
     }
 }
+
+#[test]
+fn the_crack_figure_draws_the_ranges_the_threshold_and_the_crack() {
+    // The crack example: ΔK against length on log-log axes (ticks at 1, 2, 5 x 10^k, labelled
+    // plainly) beside the sxx map with the crack; the numbers are the crack command's.
+    let scratch = Scratch::new("crack");
+    let path = scratch.out("crack.svg");
+    let case = example("crack.toml");
+    let o = run(&[
+        "plot",
+        "crack",
+        &case,
+        "-o",
+        path.to_str().unwrap(),
+        "--cells",
+        "200",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&path).unwrap();
+    for n in [
+        "ΔK effective",
+        "ΔK_I",
+        "ΔK_II",
+        "threshold ΔK_th(l) (El Haddad)",
+        "crack length l (mm)",
+        "stress intensity range ΔK (MPa √mm)",
+        "crack, l = 0.3 mm",
+        "\n0.002\n",
+        "\n0.01\n",
+        "\n0.1\n",
+        "σxx (MPa)",
+    ] {
+        assert!(svg.contains(n), "{n:?} not in the SVG");
+    }
+    // Without [crack]: the crack command's error.
+    let hertz = example("hertz.toml");
+    let o = run(&["plot", "crack", &hertz, "-o", path.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+}

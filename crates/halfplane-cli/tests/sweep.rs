@@ -244,6 +244,95 @@ fn a_march_sweep_adds_the_march_columns_and_matches_the_march_command() {
 }
 
 #[test]
+fn a_crack_sweep_records_verdict_and_arrest_length_as_the_crack_command() {
+    // A crack-arrest map over the threshold (the crack example, coarsened): the rows take both
+    // verdicts, and each equals `halfplane crack --json` on the row's case written out.
+    let base = std::fs::read_to_string(example("crack.toml"))
+        .unwrap()
+        .replace("cells = 400", "cells = 200")
+        .replace("steps_per_half = 30", "steps_per_half = 20")
+        .replace("count = 20", "count = 8");
+    let dir = scratch("sweep-crack");
+    let spec = format!(
+        "{base}[sweep]\nmode = \"grid\"\nanalysis = \"crack\"\n[sweep.vary]\n\"fatigue.threshold\" = [100.0, 260.0]\n"
+    );
+    let table = rows(&sweep(&dir, &spec, "crack.csv", &[]));
+    assert_eq!(
+        table[0][10..].join(","),
+        "error,crack.verdict,crack.arrest_length"
+    );
+    let mut verdicts = Vec::new();
+    for row in &table[1..] {
+        assert!(row[10].is_empty(), "{}", row[10]);
+        let case_path = dir.join(format!("case-{}.toml", row[0]));
+        let threshold = format!("threshold = {}", row[0]);
+        std::fs::write(
+            &case_path,
+            base.replacen("threshold = 160.0", &threshold, 1),
+        )
+        .unwrap();
+        let o = run(&["crack", case_path.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(row[11], json["verdict"].as_str().unwrap());
+        match json["arrest_length"].as_f64() {
+            Some(l) => assert!((num(&row[12]) - l).abs() <= 1e-14 * l, "{} {l}", row[12]),
+            None => assert!(row[12].is_empty(), "{}", row[12]),
+        }
+        verdicts.push(row[11].clone());
+    }
+    assert_eq!(verdicts, ["propagates", "arrests"]);
+}
+
+#[cfg(feature = "plot")] // draws a figure
+#[test]
+fn a_crack_arrest_map_colours_the_verdicts() {
+    // A crack sweep over two paths drawn by its verdict (categories, as regimes) and its arrest
+    // length (a number; rows that do not arrest have none).
+    let base = std::fs::read_to_string(example("crack.toml"))
+        .unwrap()
+        .replace("cells = 400", "cells = 100")
+        .replace("steps_per_half = 30", "steps_per_half = 10")
+        .replace("count = 20", "count = 6");
+    let dir = scratch("sweep-crack-map");
+    let spec = format!(
+        "{base}[sweep]\nmode = \"grid\"\nanalysis = \"crack\"\n[sweep.vary]\n\"fatigue.threshold\" = [100.0, 260.0]\n\"crack.face_friction\" = [0.0, 0.5]\n"
+    );
+    sweep(&dir, &spec, "map.csv", &[]);
+    let csv = dir.join("map.csv");
+    let svg = dir.join("map.svg");
+    let args = |color: &str| {
+        vec![
+            "plot".to_string(),
+            "design-map".into(),
+            csv.to_str().unwrap().into(),
+            "-o".into(),
+            svg.to_str().unwrap().into(),
+            "--x".into(),
+            "fatigue.threshold".into(),
+            "--y".into(),
+            "crack.face_friction".into(),
+            "--color".into(),
+            color.into(),
+        ]
+    };
+    let a = args("crack.verdict");
+    let o = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("propagates") && text.contains("arrests"),
+        "legend"
+    );
+    let a = args("crack.arrest_length");
+    let o = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&svg)
+        .unwrap()
+        .contains("crack arrest length (mm)"));
+}
+
+#[test]
 fn a_march_sweep_runs_cycles_steady_as_the_march_command_does() {
     // cycles = "steady": each row marches until its cycle repeats and says how many it took.
     let case = format!(

@@ -93,16 +93,21 @@ pub fn stress_map_figure(
     map: &GridMap,
     name: &str,
     step: usize,
-    half_width: f64,
+    contact: [f64; 2],
     units: &Units,
 ) -> Result<Figure, PlotError> {
     let label = format!("{name} ({})", units.stress);
     let (mut series, bar) = field_map(map, name, label, Shading::Diverging)?;
+    let [left, right] = contact;
     series.push(Series::new(
-        "contact −a ≤ x ≤ a",
+        if left == -right {
+            "contact −a ≤ x ≤ a"
+        } else {
+            "contact b1 ≤ x ≤ b2"
+        },
         Style::Line,
         3,
-        vec![(-half_width, 0.0), (half_width, 0.0)],
+        vec![(left, 0.0), (right, 0.0)],
     ));
     // Both extremes of a signed stress: the largest tension and the largest compression.
     let unit = format!(" {}", units.stress);
@@ -118,6 +123,7 @@ pub fn stress_map_figure(
             legend: Legend::Below,
             color_bar: Some(bar),
             equal_aspect: true,
+            log_axes: false,
             title: format!("{name} (tension positive)"),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
@@ -203,6 +209,7 @@ pub fn fatigue_map_figure(
             legend: Legend::Below,
             color_bar: Some(bar),
             equal_aspect: true,
+            log_axes: false,
             title: format!("{name} ({})", parameter.name()),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
@@ -267,6 +274,7 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "surface σxx(x, 0)".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("σxx ({})", units.stress),
@@ -276,6 +284,7 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "Ruiz F2 (δ the slip amplitude)".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("F2 ({f2_unit})"),

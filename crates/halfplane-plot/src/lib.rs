@@ -1,7 +1,8 @@
 //! Figures for halfplane, drawn from the same numbers the library computes: the paper's load-space,
 //! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
 //! fields and zones, filled maps of the stresses and fatigue parameters below the contact with
-//! the surface profiles of the cycle, and design maps of a sweep's rows ([`design_map_figure`]).
+//! the surface profiles of the cycle, a crack's stress intensity ranges against its length
+//! ([`crack_figure`]), and design maps of a sweep's rows ([`design_map_figure`]).
 //! SVG or PNG by file name, rendered in pure Rust with a bundled font. Maps are filled contours
 //! with a colour bar ([`ColorBar`]), numbers in plain notation ([`number`]).
 //!
@@ -12,6 +13,7 @@
 //! [`halfplane::slip_map`] and [`halfplane::record`] and are re-exported here.
 
 mod contour;
+mod crack;
 mod fields;
 mod format;
 mod map;
@@ -20,6 +22,7 @@ mod render;
 mod shading;
 
 pub use contour::{contour_segments, filled_contours, levels, FilledContours, GridMap};
+pub use crack::{crack_figure, crack_growth_panel};
 pub use fields::{fatigue_map_figure, stress_map_figure, surface_profiles_figure};
 pub use format::{level_labels, number};
 pub use map::{design_map_figure, DesignMap, MapColor};
@@ -138,35 +141,92 @@ pub fn load_space_figure(
         let points = (0..=40)
             .map(|i| {
                 let x = p1.lerp(&p2, i as f64 / 40.0);
-                Ok((
-                    x.normal(),
-                    equivalent_shear(x.shear(), x.bulk(), contact.half_width(x.normal())?, edge),
-                ))
+                let a = contact.contact_at(&x)?.half_width();
+                Ok((x.normal(), equivalent_shear(x.shear(), x.bulk(), a, edge)))
             })
             .collect::<Result<Vec<_>, halfplane::Error>>()?;
         ps.push(Series::new(name, Style::Line, color, points));
     }
+    let mut panels = vec![
+        Panel {
+            legend: Legend::Auto,
+            color_bar: None,
+            equal_aspect: false,
+            log_axes: false,
+            title: "P–Q trajectory".into(),
+            x_label: format!("normal load P ({force})"),
+            y_label: format!("shear load Q ({force})"),
+            series: pq,
+        },
+        Panel {
+            legend: Legend::Auto,
+            color_bar: None,
+            equal_aspect: false,
+            log_axes: false,
+            title: "P–S trajectories of the edges".into(),
+            x_label: format!("normal load P ({force})"),
+            y_label: format!("equivalent shear S ({force})"),
+            series: ps,
+        },
+    ];
+    if p1.moment() != 0.0 || p2.moment() != 0.0 {
+        panels.push(moment_panel(contact, p1, p2, units)?);
+    }
     Ok(Figure {
         title: "Load space".into(),
-        panels: vec![
-            Panel {
-                legend: Legend::Auto,
-                color_bar: None,
-                equal_aspect: false,
-                title: "P–Q trajectory".into(),
-                x_label: format!("normal load P ({force})"),
-                y_label: format!("shear load Q ({force})"),
-                series: pq,
-            },
-            Panel {
-                legend: Legend::Auto,
-                color_bar: None,
-                equal_aspect: false,
-                title: "P–S trajectories of the edges".into(),
-                x_label: format!("normal load P ({force})"),
-                y_label: format!("equivalent shear S ({force})"),
-                series: ps,
-            },
+        panels,
+    })
+}
+
+/// The moment's panel of the load space: the pressure centroid M/P and the contact's ends along
+/// the in-phase segment, against P, so that the contact's shift with the moment can be read.
+fn moment_panel(
+    contact: &Contact,
+    p1: LoadPoint,
+    p2: LoadPoint,
+    units: &Units,
+) -> Result<Panel, PlotError> {
+    let samples = (0..=40)
+        .map(|i| {
+            let x = p1.lerp(&p2, i as f64 / 40.0);
+            Ok((x, contact.contact_at(&x)?))
+        })
+        .collect::<Result<Vec<_>, halfplane::Error>>()?;
+    let along = |f: &dyn Fn(&LoadPoint, &halfplane::NormalContact) -> f64| {
+        samples
+            .iter()
+            .map(|(x, c)| (x.normal(), f(x, c)))
+            .collect::<Vec<_>>()
+    };
+    Ok(Panel {
+        legend: Legend::Auto,
+        color_bar: None,
+        equal_aspect: false,
+        log_axes: false,
+        title: "Moment: centroid and contact ends".into(),
+        x_label: format!("normal load P ({})", units.force_per_length),
+        y_label: format!("position x ({})", units.length),
+        series: vec![
+            Series::new("centroid M/P", Style::Line, 0, along(&|x, _| x.centroid())),
+            Series::new(
+                "contact ends b1, b2",
+                Style::Dashed,
+                3,
+                along(&|_, c| c.end(Edge::Left)),
+            ),
+            Series::new("", Style::Dashed, 3, along(&|_, c| c.end(Edge::Right))),
+            Series::new(
+                "point 1",
+                Style::Points,
+                1,
+                vec![(p1.normal(), p1.centroid())],
+            ),
+            Series::new(
+                "point 2",
+                Style::Points,
+                2,
+                vec![(p2.normal(), p2.centroid())],
+            ),
         ],
     })
 }
@@ -188,6 +248,7 @@ pub fn slip_map_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: format!("f = {}", panel.friction),
             x_label: "ΔQ/(f P0)".into(),
             y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
@@ -231,8 +292,8 @@ pub fn evolution_figure(
     let line = |f: &dyn Fn(&halfplane::evolution::EvolutionPoint) -> f64| {
         pts.iter().map(|p| (t(p), f(p))).collect::<Vec<_>>()
     };
+    let centred = pts.iter().all(|p| p.contact.is_centred());
     let panel = |right: bool| {
-        let side = if right { 1.0 } else { -1.0 };
         let mut series = Vec::new();
         // Markers first, so the analytic lines are drawn over them.
         if let Some(m) = marched {
@@ -248,11 +309,12 @@ pub fn evolution_figure(
                 points,
             ));
         }
+        let edge = if right { Edge::Right } else { Edge::Left };
         series.push(Series::new(
             "contact edge",
             Style::Line,
             3,
-            line(&|p| side * p.half_width),
+            line(&|p| p.contact.end(edge)),
         ));
         series.push(Series::new(
             "stick boundary (exact)",
@@ -282,10 +344,12 @@ pub fn evolution_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            title: if right {
-                "right edge: a and n".into()
-            } else {
-                "left edge: −a and −m".into()
+            log_axes: false,
+            title: match (right, centred) {
+                (true, true) => "right edge: a and n".into(),
+                (false, true) => "left edge: −a and −m".into(),
+                (true, false) => "right edge: b2 and n".into(),
+                (false, false) => "left edge: b1 and −m".into(),
             },
             x_label: "time t (cycles): point 1 → 2 → 1".into(),
             y_label: format!("position x ({})", units.length),
@@ -337,6 +401,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "shear traction".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("traction q ({})", units.stress),
@@ -346,6 +411,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "accumulated slip".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("slip ({})", units.length),
@@ -361,11 +427,11 @@ const STICK: (u8, u8, u8) = (140, 185, 230);
 /// Stick and slip zones against increment number: contact edges, and every stick interval as a
 /// filled cell one increment wide centred on its increment (the rest of the contact slips).
 pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
-    let edges = |sign: f64| {
+    let edges = |edge: Edge| {
         result
             .steps
             .iter()
-            .map(|s| (s.step as f64, sign * s.half_width))
+            .map(|s| (s.step as f64, s.ends[edge]))
             .collect::<Vec<_>>()
     };
     let bars: Vec<(f64, f64)> = result
@@ -384,15 +450,20 @@ pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: "stick zones (filled); slip between them and the contact edges".into(),
             x_label: "increment".into(),
             y_label: format!("position x ({})", units.length),
             series: vec![
                 Series {
-                    name: "contact edges ±a".into(),
+                    name: if result.steps.iter().all(|s| s.ends.left == -s.ends.right) {
+                        "contact edges ±a".into()
+                    } else {
+                        "contact edges b1, b2".into()
+                    },
                     style: Style::Line,
                     color: 3,
-                    pieces: vec![edges(1.0), edges(-1.0)],
+                    pieces: vec![edges(Edge::Right), edges(Edge::Left)],
                 },
                 Series::new("stick", Style::Filled(STICK), 0, bars),
             ],

@@ -232,6 +232,7 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
             legend: Legend::Below,
             color_bar,
             equal_aspect: false,
+            log_axes: false,
             title: String::new(),
             x_label: map.x_label.clone(),
             y_label: map.y_label.clone(),

@@ -57,6 +57,7 @@ pub fn match_figure(report: &MatchReport, units: &Units) -> Result<Figure, PlotE
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
             title: format!("{name}: {}", kind(side)),
             x_label: format!("normal load P ({force})"),
             y_label: format!("shear Q, equivalent shear S ({force})"),

@@ -41,7 +41,7 @@ fn stress_map_bands_cover_the_grid_and_its_lines_lie_on_the_bar_levels() {
         z: &z,
         values: &values,
     };
-    let f = stress_map_figure(&map, "σxx", 7, 0.8, &Units::default()).unwrap();
+    let f = stress_map_figure(&map, "σxx", 7, [-0.8, 0.8], &Units::default()).unwrap();
     let panel = &f.panels[0];
     assert!(panel.equal_aspect, "x and depth to the same scale");
     // The colour bar spans the data, -150 (x = -1, z = 1) to 100 (x = 1, z = 0), with the
@@ -111,7 +111,7 @@ fn stress_map_bands_cover_the_grid_and_its_lines_lie_on_the_bar_levels() {
         ..map
     };
     assert!(matches!(
-        stress_map_figure(&short, "σxx", 7, 0.8, &Units::default()),
+        stress_map_figure(&short, "σxx", 7, [-0.8, 0.8], &Units::default()),
         Err(PlotError::Request(_))
     ));
 }

@@ -146,6 +146,9 @@ fn step_row(s: &march::StepReport) -> Node {
         ("energy_increment", Node::Float(s.energy_increment)),
         ("energy", Node::Float(s.energy)),
         ("passes", Node::UInt(s.passes as u64)),
+        ("moment", Node::Float(s.load.moment())),
+        ("contact_left", Node::Float(s.ends.left)),
+        ("contact_right", Node::Float(s.ends.right)),
     ];
     Node::Map(entries.map(|(k, v)| (k.to_string(), v)).to_vec())
 }

@@ -131,6 +131,8 @@ pub fn steady_batch_columns<'py>(
             }
         };
         let v = |c: usize| value(c, i);
+        // The moments default to 0 where the table has no such column.
+        let m = |c: usize| slices[c].map_or(0.0, |s| s[i]);
         SteadyRow {
             youngs_modulus: v(0),
             poisson_ratio: v(1),
@@ -139,6 +141,7 @@ pub fn steady_batch_columns<'py>(
             shape: [v(3), v(4), v(5), v(6)],
             point1: [v(7), v(8), v(9)],
             point2: [v(10), v(11), v(12)],
+            moment: [m(13), m(14)],
         }
         .steady_summary(&options)
     };

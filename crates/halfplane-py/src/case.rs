@@ -90,7 +90,7 @@ impl PyCase {
 }
 
 /// A Python value as a TOML value (numbers, strings, booleans, lists and dicts).
-fn to_toml(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
+pub(crate) fn to_toml(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
     if value.is_instance_of::<PyBool>() {
         return Ok(toml::Value::Boolean(value.extract()?));
     }
@@ -134,24 +134,25 @@ fn to_toml(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
     )))
 }
 
-/// A load point given as `(P, Q)`, `(P, Q, sigma)` or a dict with `normal`, `shear`, `bulk`.
+/// A load point given as `(P, Q)`, `(P, Q, sigma)`, `(P, Q, sigma, M)` or a dict with `normal`,
+/// `shear`, `bulk`, `moment`.
 fn point_table(value: &Bound<'_, PyAny>, field: &str) -> PyResult<toml::Value> {
     if value.is_instance_of::<PyDict>() {
         return to_toml(value, field);
     }
     let numbers: Vec<f64> = value.extract().map_err(|_| {
         PyTypeError::new_err(format!(
-            "{field} must be (normal, shear[, bulk]) numbers or a dict with those keys"
+            "{field} must be (normal, shear[, bulk[, moment]]) numbers or a dict with those keys"
         ))
     })?;
-    if !(2..=3).contains(&numbers.len()) {
+    if !(2..=4).contains(&numbers.len()) {
         return Err(PyTypeError::new_err(format!(
-            "{field} must have 2 or 3 numbers (normal P, shear Q[, bulk sigma]), found {}",
+            "{field} must have 2 to 4 numbers (normal P, shear Q[, bulk sigma[, moment M]]), found {}",
             numbers.len()
         )));
     }
     let mut t = toml::Table::new();
-    for (key, x) in ["normal", "shear", "bulk"].iter().zip(numbers) {
+    for (key, x) in ["normal", "shear", "bulk", "moment"].iter().zip(numbers) {
         t.insert((*key).into(), toml::Value::Float(x));
     }
     Ok(toml::Value::Table(t))
@@ -181,7 +182,8 @@ impl PyCase {
     #[new]
     #[pyo3(signature = (*, youngs_modulus, poisson_ratio, friction, profile, radius=None,
         flat_half_width=None, coefficient=None, exponent=None, table=None, kinks=None,
-        point1=None, point2=None, history=None, cells=None, slip_tolerance=None, units=None))]
+        point1=None, point2=None, history=None, cells=None, slip_tolerance=None, units=None,
+        left_radius=None, right_radius=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -201,6 +203,8 @@ impl PyCase {
         cells: Option<i64>,
         slip_tolerance: Option<f64>,
         units: Option<Bound<'_, PyAny>>,
+        left_radius: Option<f64>,
+        right_radius: Option<f64>,
     ) -> PyResult<Self> {
         let mut doc = toml::Table::new();
         let m = section(&mut doc, "material");
@@ -211,6 +215,8 @@ impl PyCase {
         p.insert("kind".into(), profile.into());
         for (key, value) in [
             ("radius", radius),
+            ("left_radius", left_radius),
+            ("right_radius", right_radius),
             ("flat_half_width", flat_half_width),
             ("coefficient", coefficient),
             ("exponent", exponent),
@@ -256,15 +262,18 @@ impl PyCase {
                 let rows: Vec<Vec<f64>> = h.extract().map_err(|_| {
                     PyTypeError::new_err(
                         "history must be a dict (the [history] section's fields) or rows of \
-                         (normal, shear, bulk) numbers",
+                         (normal, shear, bulk[, moment]) numbers",
                     )
                 })?;
-                if let Some(bad) = rows.iter().position(|r| r.len() != 3) {
+                // Every row as long as the first: normal, shear, bulk and optionally moment.
+                let width = rows.first().map_or(3, |r| r.len().clamp(3, 4));
+                if let Some(bad) = rows.iter().position(|r| r.len() != width) {
                     return Err(errors::exception(
                         py,
                         errors::Kind::Input,
                         &format!(
-                            "history row {}: has {} values; give normal, shear, bulk",
+                            "history row {}: has {} values; give normal, shear, bulk (and \
+                             moment, in every row or none), {width} as the first row",
                             bad + 1,
                             rows[bad].len()
                         ),
@@ -273,11 +282,18 @@ impl PyCase {
                 }
                 // Checked here, so that a bad row is reported as the row of the list it is
                 // ("history row 3"), not as a line of the CSV file the case keeps it in.
-                let triples: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
-                halfplane::history::History::from_rows(&triples)
+                let full: Vec<[f64; 4]> = rows
+                    .iter()
+                    .map(|r| [r[0], r[1], r[2], r.get(3).copied().unwrap_or(0.0)])
+                    .collect();
+                halfplane::history::History::from_moment_rows(&full)
                     .map_err(|e| errors::from_library(py, &e))?;
-                section(&mut doc, "history")
-                    .insert("data".into(), csv_table("normal,shear,bulk", &rows).into());
+                let header = if width == 4 {
+                    "normal,shear,bulk,moment"
+                } else {
+                    "normal,shear,bulk"
+                };
+                section(&mut doc, "history").insert("data".into(), csv_table(header, &rows).into());
             }
         }
         if cells.is_some() || slip_tolerance.is_some() {
@@ -369,6 +385,16 @@ impl PyCase {
         self.case.cycle.map(|c| triple(c.as_given().1))
     }
 
+    /// The moments M (about x = 0) at the first and second cycle points as given, or None
+    /// without a cycle; (0.0, 0.0) without a moment.
+    #[getter]
+    fn moments(&self) -> Option<(f64, f64)> {
+        self.case.cycle.map(|c| {
+            let (a, b) = c.as_given();
+            (a.moment(), b.moment())
+        })
+    }
+
     /// Increments of the load history, or None without one (or when it is marched until its
     /// cycle repeats, `cycles = "steady"`, so that its length is known only once marched).
     #[getter]
@@ -392,12 +418,20 @@ impl PyCase {
             Shape::FlatRounded {
                 flat_half_width,
                 edge_radius,
-            } => {
-                let _ = write!(
-                    o,
-                    ", radius={edge_radius:?}, flat_half_width={flat_half_width:?}"
-                );
-            }
+            } => match c.profile().edge_radii() {
+                Some((left, right)) if left != right => {
+                    let _ = write!(
+                        o,
+                        ", left_radius={left:?}, right_radius={right:?}, flat_half_width={flat_half_width:?}"
+                    );
+                }
+                _ => {
+                    let _ = write!(
+                        o,
+                        ", radius={edge_radius:?}, flat_half_width={flat_half_width:?}"
+                    );
+                }
+            },
             Shape::PowerLaw {
                 coefficient,
                 exponent,
@@ -418,6 +452,9 @@ impl PyCase {
         if let Some(cycle) = self.case.cycle {
             let (a, b) = cycle.as_given();
             let _ = write!(o, ", point1={:?}, point2={:?}", triple(a), triple(b));
+            if a.moment() != 0.0 || b.moment() != 0.0 {
+                let _ = write!(o, ", moments=({:?}, {:?})", a.moment(), b.moment());
+            }
         }
         if let Ok((h, until_steady)) = self.case.march_history() {
             let _ = write!(o, ", history=<{} increments", h.loads().len());

@@ -9,6 +9,7 @@ mod analyses;
 mod batch;
 mod case;
 mod convert;
+mod crack;
 mod errors;
 mod matching;
 mod subsurface;
@@ -27,6 +28,7 @@ fn _halfplane(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(batch::steady_batch_columns, m)?)?;
     m.add_function(wrap_pyfunction!(subsurface::stress_points, m)?)?;
     m.add_function(wrap_pyfunction!(subsurface::fatigue_report, m)?)?;
+    m.add_function(wrap_pyfunction!(crack::crack_report, m)?)?;
     m.add_function(wrap_pyfunction!(matching::match_report, m)?)?;
     m.add_function(wrap_pyfunction!(errors::_error_examples, m)?)?;
     m.add("REGIMES", batch::REGIMES.to_vec())?;

@@ -21,7 +21,7 @@ const TEST_NAME: &str = "test.toml";
 /// the test case (read back from the text `match` writes) and the warnings and notes.
 #[pyfunction]
 #[pyo3(signature = (case, profile, radius=None, flat_half_width=None, coefficient=None,
-    exponent=None, youngs_modulus=None, poisson_ratio=None, friction=None, exact=false))]
+    exponent=None, youngs_modulus=None, poisson_ratio=None, friction=None, exact=false, edge=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn match_report<'py>(
     py: Python<'py>,
@@ -35,6 +35,7 @@ pub fn match_report<'py>(
     poisson_ratio: Option<f64>,
     friction: Option<f64>,
     exact: bool,
+    edge: Option<&str>,
 ) -> PyResult<(Bound<'py, PyAny>, PyCase, String, Vec<String>)> {
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let profile = match profile {
@@ -47,6 +48,16 @@ pub fn match_report<'py>(
         )))
         }
     };
+    let edge = match edge {
+        None => None,
+        Some("left") => Some(halfplane::Edge::Left),
+        Some("right") => Some(halfplane::Edge::Right),
+        Some(other) => {
+            return Err(input(anyhow::anyhow!(
+                "invalid edge = \"{other}\": must be \"left\" or \"right\" (or None: the edge whose K_T changes more)"
+            )))
+        }
+    };
     let test = TestOptions {
         profile,
         radius,
@@ -57,6 +68,7 @@ pub fn match_report<'py>(
         poisson_ratio,
         friction,
         exact,
+        edge,
     };
     let config = MatchConfig::from_case(
         case.case.clone(),

@@ -15,7 +15,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// `halfplane stress CASE --step STEP` at the points `(x[i], z[i])` (z the depth, >= 0): the
-/// increment used, its load (`step`, `normal`, `shear`, `bulk`, `half_width`) and the arrays
+/// increment used, its load (`step`, `normal`, `shear`, `bulk`, `half_width`, `moment`,
+/// `contact_left`, `contact_right`) and the arrays
 /// `sxx`, `szz`, `syy`, `sxz`, one value per point.
 #[pyfunction]
 #[pyo3(signature = (case, x, z, step=None, cells=None))]
@@ -55,6 +56,9 @@ pub fn stress_points<'py>(
     out.set_item("shear", report.shear)?;
     out.set_item("bulk", report.bulk)?;
     out.set_item("half_width", report.half_width)?;
+    out.set_item("moment", report.moment)?;
+    out.set_item("contact_left", report.contact_left)?;
+    out.set_item("contact_right", report.contact_right)?;
     let column = |f: fn(&halfplane_case::report::stress::StressRow) -> f64| {
         PyArray1::from_iter(py, report.points.iter().map(f))
     };

@@ -36,6 +36,7 @@ fn main() {
             shape: [uniform(20.0, 80.0), flat, f64::NAN, f64::NAN],
             point1: [uniform(800.0, 1200.0), -q, -s],
             point2: [uniform(800.0, 1400.0), q, s],
+            moment: [0.0, 0.0],
         };
         if let Ok(summary) = row.steady_summary(&options) {
             solved += 1;

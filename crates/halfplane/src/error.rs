@@ -385,6 +385,26 @@ pub enum Error {
         what: &'static str,
     },
 
+    /// A wear run stopped at a physical cycle whose march failed (the contact opened entirely,
+    /// left the grid, or slid where it may not); the checkpoints before it were reported.
+    #[error("wear stopped at cycle {cycle}: {cause}")]
+    WearStopped {
+        /// The physical cycle (1-based) whose march failed.
+        cycle: u64,
+        /// Why.
+        cause: Box<Error>,
+    },
+
+    /// The contact of a worn gap reached the end of its grid: the grid must be wider (the
+    /// grid's width over the unworn contact's is `field`).
+    #[error("the worn contact reached the end of its grid at x = {end}: raise {field} (the grid's width over the unworn contact's; 1 to 100)")]
+    GridTooNarrow {
+        /// The field that sets the grid's width (`wear.span`).
+        field: &'static str,
+        /// The x of the grid's end the contact reached.
+        end: f64,
+    },
+
     /// The moment would put a contact end beyond a tabulated profile at this normal load.
     #[error(
         "invalid {field} = {value}: at normal load P = {normal} a contact end would leave the tabulated profile; \

@@ -35,6 +35,7 @@
 //! and pairs indexed by them), [`reference`](mod@reference) (the reference cycle of `docs/theory.md`), [`error`].
 
 pub mod asymptotic;
+#[cfg(feature = "parallel")]
 pub mod batch;
 pub mod closed_form;
 pub mod crack;
@@ -58,6 +59,7 @@ pub mod slip_map;
 mod spline;
 pub mod steady;
 pub mod stress;
+pub mod wear;
 pub mod written;
 
 pub use error::{Error, Result};

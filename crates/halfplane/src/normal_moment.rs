@@ -63,6 +63,26 @@ impl NormalContact {
         }
     }
 
+    /// A contact solved on the marching grid (a worn gap, `march/gap.rs`): its ends the outer
+    /// edges of the outermost touching cells, K_N not known there (0).
+    pub(crate) fn on_grid(normal: f64, moment: f64, ends: PerEdge<f64>, rotation: f64) -> Self {
+        Self {
+            normal,
+            moment,
+            ends,
+            rotation,
+            intensity: PerEdge {
+                left: 0.0,
+                right: 0.0,
+            },
+            on_flat: PerEdge {
+                left: false,
+                right: false,
+            },
+            centred: false,
+        }
+    }
+
     /// The same contact with the end `edge` put at `x`, a rounding-size move: the march puts an
     /// end on a cell centre exactly where its solve found it there to 1e-13.
     pub(crate) fn with_end(mut self, edge: Edge, x: f64) -> Self {
@@ -253,49 +273,162 @@ impl Contact {
 
     /// [`Contact::contact_at`] for P and M given apart.
     pub(crate) fn contact_for(&self, normal: f64, moment: f64) -> Result<NormalContact> {
-        if moment == 0.0 && self.profile.is_symmetric() {
-            let a = self.half_width(normal)?;
-            return Ok(NormalContact::centred(normal, a, self.normal_intensity(a)?));
+        if let Some(found) = self.closed_form_contact(normal, moment)? {
+            return Ok(found);
+        }
+        // Newton on both resultants from the centroid and the symmetric contact's half-width
+        // (exact for Hertz, close for a pad whose ends stay off its flat); the bracketed solve
+        // when that does not settle.
+        physical_positive("normal load", normal)?;
+        physical("moment", moment)?;
+        let c = moment / normal;
+        let a = if self.profile.is_symmetric()
+            && matches!(self.profile.shape(), Shape::Tabulated { .. })
+        {
+            // A mirrored table: the contact under P alone, by the knot table of the symmetric
+            // contact law (the other kinds' first guesses below are closed forms).
+            self.half_width(normal).unwrap_or(0.0)
+        } else {
+            match self.first_half_width(normal) {
+                a if a > 0.0 => a,
+                _ => {
+                    let (lower, upper) = self.profile.bounds();
+                    0.5 * (c - lower).min(upper - c)
+                }
+            }
+        };
+        if a > 0.0 && a.is_finite() {
+            if let Some(found) = self.newton(normal, moment, c, a, 1e-15)? {
+                return Ok(found);
+            }
         }
         self.normal_contact(normal, moment)
     }
 
+    /// The closed forms: the centred contact of a symmetric profile under no moment (the
+    /// symmetric contact law), and Hertz under a moment, the symmetric contact moved by the
+    /// centroid e = M/P with the rotation `-e/R` and the symmetric K_N at both ends (the module's
+    /// equations with `g' = x/R`: `I_0 = pi c/R`, `I_1 = pi a/(2R)`, `I_2 = 0`). `None` for the
+    /// other contacts.
+    fn closed_form_contact(&self, normal: f64, moment: f64) -> Result<Option<NormalContact>> {
+        if moment == 0.0 && self.profile.is_symmetric() {
+            let a = self.half_width(normal)?;
+            return Ok(Some(NormalContact::centred(
+                normal,
+                a,
+                self.normal_intensity(a)?,
+            )));
+        }
+        let Shape::Hertz { radius } = self.profile.shape() else {
+            return Ok(None);
+        };
+        physical("moment", moment)?;
+        let a = self.half_width(normal)?;
+        let k_n = self.normal_intensity(a)?;
+        let e = moment / normal;
+        Ok(Some(NormalContact {
+            normal,
+            moment,
+            ends: PerEdge {
+                left: e - a,
+                right: e + a,
+            },
+            rotation: -e / radius,
+            intensity: PerEdge {
+                left: k_n,
+                right: k_n,
+            },
+            on_flat: PerEdge {
+                left: false,
+                right: false,
+            },
+            centred: false,
+        }))
+    }
+
     /// [`Contact::contact_for`] started from `near`, the contact of a nearby load: Newton's
-    /// method on both resultants at once, `(A P, A M)` against `(c, a)` with the exact Jacobian
-    /// (module docs), which converges in two or three steps from a neighbour along a load path;
-    /// the bracketed solve of [`Contact::normal_contact`] from scratch when a step leaves the
-    /// profile or Newton has not settled in 8 steps. The same stopping rule (a step of 1e-15 of
-    /// `a + |c|`), so the answer agrees with the solve from scratch to rounding.
+    /// method on both resultants at once ([`Contact::newton`]), which converges in two or three
+    /// steps from a neighbour along a load path; the bracketed solve of
+    /// [`Contact::normal_contact`] when it does not settle. The answer agrees with the solve
+    /// from scratch to rounding.
     pub(crate) fn contact_near(
         &self,
         normal: f64,
         moment: f64,
         near: &NormalContact,
     ) -> Result<NormalContact> {
-        if moment == 0.0 && self.profile.is_symmetric() {
-            return self.contact_for(normal, moment);
+        self.contact_from(normal, moment, (near.centre(), near.half_width()), 1e-15)
+    }
+
+    /// [`Contact::contact_near`] from a guessed contact `(c, a)` (a > 0, a prediction along a
+    /// load path) instead of a solved one, to the relative step `tolerance` (at least 1e-15, the
+    /// solve to rounding; a looser one suits contacts that only bound a quantity along a path,
+    /// far inside the bound's own margin, and its K_N are those of Newton's Jacobian: about 1e-7
+    /// for the power law, exact for piecewise profiles). The bracketed solve (to rounding) when
+    /// Newton does not settle.
+    pub(crate) fn contact_from(
+        &self,
+        normal: f64,
+        moment: f64,
+        (c, a): (f64, f64),
+        tolerance: f64,
+    ) -> Result<NormalContact> {
+        if let Some(found) = self.closed_form_contact(normal, moment)? {
+            return Ok(found);
         }
         physical_positive("normal load", normal)?;
         physical("moment", moment)?;
+        if a > 0.0 && a.is_finite() && c.is_finite() {
+            if let Some(found) = self.newton(normal, moment, c, a, tolerance.max(1e-15))? {
+                return Ok(found);
+            }
+        }
+        self.normal_contact(normal, moment)
+    }
+
+    /// Newton's method on both resultants, `(A P, A M)` against `(c, a)` with the exact Jacobian
+    /// (module docs), from `(c, a)`: at most 8 steps, stopping at a step of `tolerance` times
+    /// `a + |c|` (1e-15 is the bracketed solve's rule, so the two agree to rounding). `None` when
+    /// a step leaves the profile or is not finite, or Newton has not settled.
+    fn newton(
+        &self,
+        normal: f64,
+        moment: f64,
+        c: f64,
+        a: f64,
+        tolerance: f64,
+    ) -> Result<Option<NormalContact>> {
         let a_comp = self.compliance().value();
         let (target_p, target_m) = (a_comp * normal, a_comp * moment);
-        let (mut c, mut a) = (near.centre(), near.half_width());
+        let (mut c, mut a) = (c, a);
         for _ in 0..8 {
-            let Ok(r) = self.resultants(c, a) else { break };
+            let Ok(r) = self
+                .profile
+                .contact_integrals_for_newton(c, a)
+                .map(|s| Resultants::new(c, a, &s))
+            else {
+                return Ok(None);
+            };
             let (f1, f2) = (r.load - target_p, r.moment - target_m);
             let det = r.load_c * r.moment_a - r.load_a * r.moment_c;
             let step_c = -(r.moment_a * f1 - r.load_a * f2) / det;
             let step_a = -(-r.moment_c * f1 + r.load_c * f2) / det;
             if !(step_c.is_finite() && step_a.is_finite()) || a + step_a <= 0.0 {
-                break;
+                return Ok(None);
             }
-            if step_c.abs().max(step_a.abs()) <= 1e-15 * (a + c.abs()) {
-                return self.finish(normal, moment, c, a, &r);
+            if step_c.abs().max(step_a.abs()) <= tolerance * (a + c.abs()) {
+                // K_N from the accurate derivatives (the same ones for piecewise profiles) for a
+                // contact solved to rounding; a looser one only bounds a quantity.
+                let r = match self.profile.shape() {
+                    Shape::PowerLaw { .. } if tolerance <= 1e-15 => self.resultants(c, a)?,
+                    _ => r,
+                };
+                return self.finish(normal, moment, c, a, &r).map(Some);
             }
             c += step_c;
             a += step_a;
         }
-        self.normal_contact(normal, moment)
+        Ok(None)
     }
 
     /// The solved contact `(c, a)` with its resultants `r`: K_N at both ends, checked to be
@@ -353,10 +486,21 @@ impl Contact {
     /// symmetric [`Contact::pressure`] for a centred contact, [`Contact::pressure_in`] otherwise.
     pub fn pressure_at(&self, state: &NormalContact, x: f64) -> Result<f64> {
         if state.centred {
-            self.pressure(state.half_width(), x)
-        } else {
-            self.pressure_in(state, x)
+            return self.pressure(state.half_width(), x);
         }
+        if let Shape::Hertz { radius } = self.profile.shape() {
+            // The Hertz pressure about the contact's centre (closed_form::hertz_pressure).
+            crate::error::finite("position x", x)?;
+            let a_comp = self.compliance().value();
+            let (c, a) = (state.centre(), state.half_width());
+            return Ok(crate::closed_form::hertz_pressure(
+                a_comp,
+                *radius,
+                a,
+                x - c,
+            ));
+        }
+        self.pressure_in(state, x)
     }
 
     /// The contact pressure of `state` at `x` (zero outside `[b1, b2]`):

@@ -7,12 +7,18 @@ use halfplane::steady::{self, SteadyOptions};
 use halfplane::{Contact, Cycle, GivenPoint, LoadPoint, Profile};
 
 /// Largest relative error of the four slip-zone estimates and of the stick-zone ends measured on
-/// the slip-zone scale, for load ranges scaled by `lambda` about a fixed mean.
-fn errors(c: &Contact, lambda: f64) -> (f64, f64) {
+/// the slip-zone scale, for load ranges scaled by `lambda` about a fixed mean; with
+/// `moment = (M0, dM)` the moment runs from `M0 - dM/2` to `M0 + dM/2` (its range scaled too).
+fn errors_with(c: &Contact, lambda: f64, moment: (f64, f64)) -> (f64, f64) {
     let (dp, dq, ds) = (400.0 * lambda, 500.0 * lambda, 40.0 * lambda);
+    let (m0, dm) = (moment.0, moment.1 * lambda);
     let cycle = Cycle::new(
-        point(1200.0 - dp / 2.0, -dq / 2.0, -ds / 2.0),
-        point(1200.0 + dp / 2.0, dq / 2.0, ds / 2.0),
+        point(1200.0 - dp / 2.0, -dq / 2.0, -ds / 2.0)
+            .with_moment("test", m0 - dm / 2.0)
+            .unwrap(),
+        point(1200.0 + dp / 2.0, dq / 2.0, ds / 2.0)
+            .with_moment("test", m0 + dm / 2.0)
+            .unwrap(),
     );
     let exact = steady::analyse(c, &cycle, &SteadyOptions::default()).unwrap();
     let slip = exact.slip_zones.unwrap();
@@ -24,12 +30,16 @@ fn errors(c: &Contact, lambda: f64) -> (f64, f64) {
             .max(rel(est.slip_zones.left[i], slip.left[i]))
             .max(rel(est.slip_zones.right[i], slip.right[i]));
     }
-    let scale = exact.half_width.first - zone.right;
+    let scale = exact.contacts.first.end(Edge::Right) - zone.right;
     let z_err = ((est.stick_zone.left - zone.left)
         .abs()
         .max((est.stick_zone.right - zone.right).abs()))
         / scale;
     (w_err, z_err)
+}
+
+fn errors(c: &Contact, lambda: f64) -> (f64, f64) {
+    errors_with(c, lambda, (0.0, 0.0))
 }
 
 #[test]
@@ -56,6 +66,40 @@ fn asymptotic_estimates_converge_to_the_exact_result_as_the_load_range_shrinks()
                 assert!(
                     (1.7..2.3).contains(&(pz / z)),
                     "stick-zone error did not halve: {pz:e} -> {z:e}"
+                );
+            }
+            previous = Some((w, z));
+        }
+        let (w, z) = previous.unwrap();
+        assert!(w < 0.01 && z < 0.01, "errors at 1/64 range: {w:e}, {z:e}");
+    }
+}
+
+#[test]
+fn under_a_moment_the_estimates_converge_edge_by_edge() {
+    // The same convergence with the contact off centre and its centroid moving along the cycle:
+    // each edge's slip zone from its own K_N and its own movement, the stick zone's ends from
+    // the contact carrying P_K with the mean rotation (docs/theory.md, "Moment"). A wrong edge
+    // term (the half-width's change instead of the edge's own movement) leaves an error of order
+    // dM/(P a) that does not shrink relative to the slip zone. On Hertz and a punch with unequal
+    // edge radii, M from 180 - 60 to 180 + 60 N mm/mm at the full range.
+    for profile in [
+        Profile::hertz(RADIUS).unwrap(),
+        Profile::flat_rounded_asymmetric(0.3, 30.0, 70.0).unwrap(),
+    ] {
+        let c = contact(profile);
+        let mut previous: Option<(f64, f64)> = None;
+        for k in 0..7 {
+            let lambda = 0.5f64.powi(k);
+            let (w, z) = errors_with(&c, lambda, (180.0, 120.0));
+            eprintln!(
+                "{:?} range x {lambda:<9} slip-zone rel. error {w:.3e}   stick-zone error / slip zone {z:.3e}",
+                c.profile().shape()
+            );
+            if let Some((pw, pz)) = previous {
+                assert!(
+                    (1.7..2.3).contains(&(pw / w)) && (1.7..2.3).contains(&(pz / z)),
+                    "the errors did not halve: {pw:e} -> {w:e}, {pz:e} -> {z:e}"
                 );
             }
             previous = Some((w, z));

@@ -1,6 +1,7 @@
 //! The crack module against independent references (`docs/crack.md`): the edge crack's exact
 //! factor, power-law face loads, symmetry of inclined cracks, closed faces with and without
-//! friction against the open solution under the reduced shear, and convergence in points.
+//! friction against the open solution under the reduced shear, convergence in points, and the
+//! inclined crack against a second, separately discretised solution (`crack::graded`).
 
 use halfplane::crack::{Crack, CrackSolver, FaceState};
 use halfplane::Material;
@@ -220,7 +221,8 @@ mod under_the_contact {
     use halfplane::{reference, LoadPoint};
     use std::f64::consts::PI;
 
-    fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
+    /// The crack example's cycle: P = 1000 with Q and the bulk tension in phase to (q, bulk).
+    pub fn history(q: f64, bulk: f64, steps_per_half: usize) -> History {
         History::in_phase(
             LoadPoint::new("point1", 1000.0, -q, -bulk).unwrap(),
             LoadPoint::new("point2", 1000.0, q, bulk).unwrap(),
@@ -298,6 +300,58 @@ mod under_the_contact {
     }
 
     #[test]
+    fn critical_plane_angle_lies_in_the_plane_of_largest_swt() {
+        // A mouth in the trailing slip zone (x = -0.7, a = 0.761), where the surface shear
+        // traction tilts the principal planes. The crack must lie in the plane on which
+        // SWT = sigma_n,max d(eps_n)/2 (plane strain, elastic) is largest: computed here from the
+        // mouth's stress history on every plane (0.1 degree apart), independently of the
+        // fatigue module's search (0.05 degree refinement).
+        let c = constants();
+        let h = history(300.0, 60.0, 20);
+        let contact = reference::hertz();
+        let opts = CrackOptions::new(Position::At(-0.7), 0.0, vec![0.01], 0.0)
+            .unwrap()
+            .with_critical_plane(halfplane::fatigue::Parameter::Swt)
+            .unwrap();
+        let r = crack::analyse(&contact, &h, &options(), &c, &opts).unwrap();
+        let theta = r.angle.to_radians();
+        let spc = h.cycles().unwrap().steps_per_cycle();
+        let last = h.loads().len();
+        let steps: Vec<usize> = (last + 1 - spc..=last).collect();
+        let kept = halfplane::stress::marched(&contact, &h, &options(), &steps).unwrap();
+        let m = contact.material();
+        let nu = m.poisson_ratio();
+        let history: Vec<_> = kept
+            .iter()
+            .map(|k| halfplane::stress::at(&k.traction, k.load.bulk(), &m, -0.7, 0.0).unwrap())
+            .collect();
+        let swt = |beta: f64| {
+            let (s, co) = beta.sin_cos();
+            let (mut smax, mut emin, mut emax) = (f64::MIN, f64::MAX, f64::MIN);
+            for st in &history {
+                let sn = st.sxx * co * co + st.szz * s * s + 2.0 * st.sxz * co * s;
+                let en =
+                    ((1.0 + nu) * sn - nu * (1.0 + nu) * (st.sxx + st.szz)) / m.youngs_modulus();
+                smax = smax.max(sn);
+                emin = emin.min(en);
+                emax = emax.max(en);
+            }
+            smax * (emax - emin) / 2.0
+        };
+        // The crack's normal n = (cos theta, -sin theta): the plane normal at -theta from +x.
+        let on_crack = swt(-theta);
+        let best = (0..1800)
+            .map(|i| swt((i as f64 * 0.1).to_radians()))
+            .fold(f64::MIN, f64::max);
+        println!(
+            "angle {:.3} degrees, SWT on the crack {on_crack:.6e}, best {best:.6e}",
+            r.angle
+        );
+        assert!(on_crack >= best * (1.0 - 1e-6), "{on_crack} {best}");
+        assert!(r.angle.abs() > 1.0, "the tilt is not trivial: {}", r.angle);
+    }
+
+    #[test]
     fn the_example_cycle_and_its_verdict() {
         let lengths: Vec<f64> = (0..12).map(|i| 0.002 * 1.6f64.powi(i)).collect();
         let opts = CrackOptions::new(Position::LargerRange, 0.0, lengths, 0.0).unwrap();
@@ -319,5 +373,358 @@ mod under_the_contact {
         println!("{:?} {:?} mouth {}", r.verdict, r.arrest_length, r.mouth);
         let (v, l) = Verdict::of(&r.rows);
         assert_eq!((v, l), (r.verdict, r.arrest_length));
+    }
+}
+
+mod weight_function {
+    use halfplane::crack::{reference, Crack, CrackSolver, FaceState};
+    use halfplane::march::MarchOptions;
+    use halfplane::{reference as contacts, stress};
+
+    #[test]
+    fn an_open_crack_under_the_contact_stress_against_the_weight_function() {
+        // The example's cycle (Hertz, P = 1000, Q and bulk tension in phase to (300, 60)); a
+        // crack normal to the surface at the trailing edge x = -a. At the increment of the
+        // largest K_I every collocation point is open (checked: the comparison is of the open
+        // crack), and K_I must equal the weight-function integral of the uncracked sxx along the
+        // crack line (Hartranft-Sih/Tada, crack::reference) within 0.5%: the weight function's own
+        // accuracy is 0.06-0.22% on polynomial loads.
+        let h = super::under_the_contact::history(300.0, 60.0, 30);
+        let contact = contacts::hertz();
+        let material = contact.material();
+        let options = MarchOptions::default().with_cells(400).unwrap();
+        let steps: Vec<usize> = (h.loads().len() - 59..=h.loads().len()).collect();
+        let kept = stress::marched(&contact, &h, &options, &steps).unwrap();
+        let a = kept[0].half_width;
+        for l in [0.002, 0.01, 0.03, 0.08] {
+            let s = CrackSolver::new(&Crack::new(-a, 0.0, l).unwrap(), &material, 40).unwrap();
+            let increments: Vec<(&stress::Traction, f64)> =
+                kept.iter().map(|k| (&k.traction, k.load.bulk())).collect();
+            let loads: Vec<(Vec<f64>, Vec<f64>)> =
+                stress::fields(&increments, &material, s.x(), s.z())
+                    .unwrap()
+                    .iter()
+                    .map(|f| {
+                        (0..f.len())
+                            .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
+                            .unzip()
+                    })
+                    .collect();
+            let out = s.cycle(&loads, 0.0).unwrap();
+            let (m, peak) = out
+                .iter()
+                .enumerate()
+                .max_by(|x, y| x.1.factors.k1.total_cmp(&y.1.factors.k1))
+                .unwrap();
+            assert!(
+                peak.states.iter().all(|s| *s == FaceState::Open),
+                "{l}: {:?}",
+                peak.states
+            );
+            let weights = reference::edge_crack_weights(l, 64).unwrap();
+            let depths: Vec<f64> = weights.iter().map(|w| w.0).collect();
+            let f = stress::field(
+                &kept[m].traction,
+                kept[m].load.bulk(),
+                &material,
+                &vec![-a; depths.len()],
+                &depths,
+            )
+            .unwrap();
+            let expect: f64 = weights.iter().zip(&f.sxx).map(|(w, s)| w.1 * s).sum();
+            let k1 = peak.factors.k1;
+            println!(
+                "l {l}: K_I {k1:.4}, weight function {expect:.4}, {:+.3}%",
+                100.0 * (k1 / expect - 1.0)
+            );
+            assert!((k1 / expect - 1.0).abs() < 5e-3, "{l}: {k1} {expect}");
+        }
+    }
+}
+
+mod inclined {
+    use super::{solver, steel};
+    use halfplane::crack::CrackSolver;
+    use std::f64::consts::PI;
+
+    /// `(K_I, K_II)/(sigma sqrt(pi l))` and `2U/l` over `(1 - nu^2)/E sigma^2 pi l` of the open
+    /// crack under remote tension `sxx = 1`, `U` the energy the crack releases,
+    /// `(1/2) integral (s_nn delta_2 + tau delta_1) ds`, taken from the face displacements at the
+    /// collocation points (Gauss-Jacobi weights of `sqrt((1 - u)/(1 + u))`).
+    pub fn remote(s: &CrackSolver) -> (f64, f64, f64) {
+        let (normal, shear): (Vec<f64>, Vec<f64>) = s
+            .distances()
+            .iter()
+            .map(|_| s.resolve(1.0, 0.0, 0.0))
+            .unzip();
+        let out = &s.cycle(&[(normal.clone(), shear.clone())], 0.0).unwrap()[0];
+        let l = s.crack().length();
+        let n = normal.len();
+        let m = (2 * n + 1) as f64;
+        let mut u = 0.0;
+        for (k, d) in s.distances().iter().enumerate() {
+            let x = 2.0 * d / l - 1.0;
+            let w = 2.0 * PI * (1.0 - x) / m;
+            // delta = sqrt((1 - x)/(1 + x)) h: the rule integrates h.
+            let h = |v: f64| v * ((1.0 + x) / (1.0 - x)).sqrt();
+            u += 0.5 * (l / 2.0) * w * (normal[k] * h(out.opening[k]) - shear[k] * h(out.slip[k]));
+        }
+        let e = steel();
+        let nu = e.poisson_ratio();
+        let scale = (1.0 - nu * nu) / e.youngs_modulus() * PI * l;
+        let f = (PI * l).sqrt();
+        (out.factors.k1 / f, out.factors.k2 / f, 2.0 * u / l / scale)
+    }
+
+    #[test]
+    fn inclined_edge_cracks_release_the_energy_their_factors_give() {
+        // Irwin: G = (1 - nu^2)/E (K_I^2 + K_II^2) (plane strain), and under remote tension the
+        // energy the crack releases is U = C l^2 (the only length is l), so G = dU/dl = 2U/l.
+        // U comes from the face displacements, K from the density at the tip: two routes through
+        // the solution. At 160 points they agree within 1e-3 for angles to 60 degrees (measured
+        // 1e-4 or better at 0-45, 8e-4 at 60; convergence in crack.md and convergence.md).
+        for angle in [0.0, 15.0, 30.0, 45.0, 60.0] {
+            let (f1, f2, g) = remote(&solver(angle, 160));
+            let k2 = f1 * f1 + f2 * f2;
+            println!("{angle}: F_I {f1:.5} F_II {f2:.5} energy {g:.6} factors {k2:.6}");
+            assert!((g / k2 - 1.0).abs() < 1e-3, "{angle}: {g} {k2}");
+            // Both modes act on inclined cracks.
+            assert!(angle == 0.0 || (f1 > 0.1 && f2 > 0.1), "{f1} {f2}");
+        }
+    }
+}
+
+mod nowell_hills {
+    use halfplane::crack::graded::GradedCrack;
+    use halfplane::crack::{
+        default_points, reference, Crack, CrackSolver, FaceState, EDGE_CRACK_FACTOR,
+    };
+    use halfplane::march::MarchOptions;
+    use halfplane::stress::closed_form::NowellHills;
+    use halfplane::stress::MarchedTraction;
+    use halfplane::{reference as contacts, stress, Material};
+    use std::f64::consts::PI;
+
+    /// The crack example's cycle at its peak (point 2: P = 1000, Q = 300, sigma = 60, f = 0.6),
+    /// marched on 400 cells: the material, the marched traction and Nowell and Hills' closed form
+    /// for the same state.
+    fn peak() -> (Material, MarchedTraction, NowellHills) {
+        let h = super::under_the_contact::history(300.0, 60.0, 30);
+        let contact = contacts::hertz();
+        let options = MarchOptions::default().with_cells(400).unwrap();
+        let peak = h.loads().len() - 30; // the end of the last rising half: point 2
+        let kept = stress::marched(&contact, &h, &options, &[peak])
+            .unwrap()
+            .remove(0);
+        assert!((kept.load.shear() - 300.0).abs() < 1e-9);
+        let nh = NowellHills::hertz(kept.half_width, 0.6, 1000.0, 300.0, 60.0);
+        (contact.material(), kept, nh)
+    }
+
+    #[test]
+    fn trailing_edge_cracks_under_the_published_partial_slip_field() {
+        // The crack example's cycle at its peak (P = 1000, Q = 300, sigma = 60, f = 0.6): the
+        // steady traction there is Nowell and Hills' monotonic partial-slip traction (1987), whose
+        // stress field is published in closed form (stress::closed_form::NowellHills). A crack
+        // normal to the surface at the trailing edge x = -a, open there: K_I of the whole chain
+        // (march, stress, dislocations) against the weight function over the closed-form sxx,
+        // within 0.5% (the weight function's own 0.06-0.22% and the march's trailing-edge stress,
+        // -1.3e-3 p0 at 400 cells). As the crack shortens K_I/(sqrt(pi l)) tends to 1.1215 times
+        // the closed form's trailing-edge peak, slowly (printed: the stress falls steeply below
+        // the edge).
+        let (material, kept, nh) = peak();
+        let a = kept.half_width;
+        let increments = [(&kept.traction, kept.load.bulk())];
+        println!("| l (mm) | K_I here | K_I closed form + weight function | difference |");
+        for l in [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2] {
+            let s = CrackSolver::new(&Crack::new(-a, 0.0, l).unwrap(), &material, 40).unwrap();
+            let f = &stress::fields(&increments, &material, s.x(), s.z()).unwrap()[0];
+            let (normal, shear): (Vec<f64>, Vec<f64>) = (0..f.len())
+                .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
+                .unzip();
+            let out = &s.cycle(&[(normal, shear)], 0.0).unwrap()[0];
+            assert!(out.states.iter().all(|s| *s == FaceState::Open), "{l}");
+            let k1 = out.factors.k1;
+            let expect: f64 = reference::edge_crack_weights(l, 64)
+                .unwrap()
+                .iter()
+                .map(|(z, w)| w * nh.stress(-a, *z)[0])
+                .sum();
+            println!(
+                "| {l} | {k1:.3} | {expect:.3} | {:+.3}% |",
+                100.0 * (k1 / expect - 1.0)
+            );
+            assert!((k1 / expect - 1.0).abs() < 5e-3, "{l}: {k1} {expect}");
+            // The steep gradient at the edge: the short-crack limit is approached slowly.
+            let limit = EDGE_CRACK_FACTOR * nh.trailing_edge_peak() * (PI * l).sqrt();
+            println!("  K_I / (1.1215 sxx(-a, 0) sqrt(pi l)) = {:.4}", k1 / limit);
+        }
+    }
+
+    #[test]
+    fn inclined_cracks_under_the_published_partial_slip_field() {
+        // The same peak and the same trailing edge, cracks at -60 to 60 degrees (negative: away
+        // from the contact): K_I and K_II of the whole chain (march, stress, the Gauss-Jacobi
+        // solution with its default points) against the graded solution under the closed-form
+        // field, where the weight function (normal cracks only) cannot reach. Within 1% of |K|:
+        // measured at most 0.62% (-60 degrees, 0.1 mm, where 80 points leave 0.4% on their own,
+        // see crack::graded's test), 0.2% or less from -45 to 45 degrees. Every crack here is
+        // open at this peak (checked); 60 degrees at 0.1 mm closes and is left out.
+        let (material, kept, nh) = peak();
+        let a = kept.half_width;
+        let increments = [(&kept.traction, kept.load.bulk())];
+        println!(
+            "| angle | l (mm) | K_I, K_II here | graded, closed-form field | difference / abs(K) |"
+        );
+        for (angle, l) in [
+            (-60.0_f64, 0.1),
+            (-60.0, 0.005),
+            (-30.0, 0.1),
+            (0.0, 0.02),
+            (30.0, 0.1),
+            (45.0, 0.02),
+            (60.0, 0.02),
+        ] {
+            let crack = Crack::new(-a, angle.to_radians(), l).unwrap();
+            let s = CrackSolver::new(&crack, &material, default_points(angle)).unwrap();
+            let f = &stress::fields(&increments, &material, s.x(), s.z()).unwrap()[0];
+            let (normal, shear): (Vec<f64>, Vec<f64>) = (0..f.len())
+                .map(|i| s.resolve(f.sxx[i], f.szz[i], f.sxz[i]))
+                .unzip();
+            let out = &s.cycle(&[(normal, shear)], 0.0).unwrap()[0];
+            assert!(
+                out.states.iter().all(|s| *s == FaceState::Open),
+                "{angle} {l}"
+            );
+            let k = out.factors;
+            let g = GradedCrack::solve(&crack, &super::graded::mesh(), |x, z| nh.stress(x, z))
+                .unwrap()
+                .tip_factors();
+            let size = g.k1.hypot(g.k2);
+            let (d1, d2) = ((k.k1 - g.k1) / size, (k.k2 - g.k2) / size);
+            println!(
+                "| {angle} | {l} | {:.3}, {:.3} | {:.3}, {:.3} | {:+.3}%, {:+.3}% |",
+                k.k1,
+                k.k2,
+                g.k1,
+                g.k2,
+                100.0 * d1,
+                100.0 * d2
+            );
+            assert!(d1.abs() < 1e-2 && d2.abs() < 1e-2, "{angle} {l}: {d1} {d2}");
+        }
+    }
+}
+
+/// The open crack solved a second way (`crack::graded`: piecewise polynomials on panels graded
+/// towards the mouth, product integration of the Cauchy part, the factors from the opening at the
+/// tip) against the exact factors, against the stress ahead of its own tip, and against the
+/// Gauss-Jacobi solution of `CrackSolver` for inclined cracks, where no published table was
+/// found to compare with (crack.md, "Inclined edge crack under remote tension").
+mod graded {
+    use super::solver;
+    use halfplane::crack::graded::{GradedCrack, GradedMesh};
+    use halfplane::crack::{default_points, Crack, EDGE_CRACK_FACTOR};
+    use std::f64::consts::PI;
+
+    /// The mesh of the comparisons: 41 panels halving towards the mouth (the first 9e-13 of the
+    /// crack long), 12 points each. At 75 degrees, the hardest case, it agrees with meshes of
+    /// ratio 0.3 and 0.7 and 16 points within 3e-6 (crack_convergence.rs).
+    pub fn mesh() -> GradedMesh {
+        GradedMesh::new(40, 12, 0.5).unwrap()
+    }
+
+    /// `(F_I, F_II)` of the graded solution of a unit crack under the uncracked `stress`.
+    pub fn factors(angle_degrees: f64, stress: impl Fn(f64, f64) -> [f64; 3]) -> (f64, f64) {
+        let crack = Crack::new(0.0, angle_degrees.to_radians(), 1.0).unwrap();
+        let k = GradedCrack::solve(&crack, &mesh(), stress)
+            .unwrap()
+            .tip_factors();
+        (k.k1 / PI.sqrt(), k.k2 / PI.sqrt())
+    }
+
+    #[test]
+    fn the_graded_solution_against_the_exact_factors() {
+        // Normal crack: uniform tension against Koiter's 1.1215222553 (measured 5e-9), uniform
+        // shear gives the same factor in mode II (the same kernel on the crack line), linear
+        // normal loads against 0.68286288 (zero at the mouth) and 0.43865938 (zero at the tip),
+        // Tada, Paris and Irwin's 0.683 and 0.439 to the digits the Gauss-Jacobi solution
+        // converges to. The face load `sxx(z)` is applied as the uncracked stress at depth z.
+        let (f1, f2) = factors(0.0, |_, _| [1.0, 0.0, 0.0]);
+        assert!(
+            (f1 - EDGE_CRACK_FACTOR).abs() < 1e-7 && f2.abs() < 1e-12,
+            "{f1} {f2}"
+        );
+        let (f1, f2) = factors(0.0, |_, _| [0.0, 0.0, 1.0]);
+        assert!(
+            f1.abs() < 1e-12 && (f2 - EDGE_CRACK_FACTOR).abs() < 1e-7,
+            "{f1} {f2}"
+        );
+        let (up, _) = factors(0.0, |_, z| [z, 0.0, 0.0]);
+        let (down, _) = factors(0.0, |_, z| [1.0 - z, 0.0, 0.0]);
+        println!("uniform {f2:.9} up {up:.9} down {down:.9}");
+        assert!((up - 0.682_862_88).abs() < 1e-7, "{up}");
+        assert!((down - 0.438_659_38).abs() < 1e-7, "{down}");
+    }
+
+    #[test]
+    fn the_factors_are_the_limit_of_the_stress_ahead_of_the_tip() {
+        // K_I = lim sqrt(2 pi r) s_nn and K_II = lim sqrt(2 pi r) tau on the line ahead of the
+        // tip (their definitions and signs, crack.md), from the stress the solution carries
+        // there, against the factors from the opening at the tip. The limit is taken from
+        // r = 1e-6, 4e-6 and 1.6e-5 of the length, removing the sqrt(r) and r terms
+        // (Richardson); measured to 1e-8.
+        for angle in [-60.0_f64, 0.0, 30.0, 75.0] {
+            let crack = Crack::new(0.0, angle.to_radians(), 1.0).unwrap();
+            let g = GradedCrack::solve(&crack, &mesh(), |_, _| [1.0, 0.0, 0.0]).unwrap();
+            let k = g.tip_factors();
+            let (sin, cos) = angle.to_radians().sin_cos();
+            // The uncracked traction on the line: s_nn = cos^2, tau = sin cos.
+            let scaled = |r: f64| {
+                let (n, t) = g.traction_ahead(r);
+                let w = (2.0 * PI * r).sqrt();
+                (w * (n + cos * cos), w * (t + sin * cos))
+            };
+            let limit = |f: [f64; 3]| (4.0 * (2.0 * f[0] - f[1]) - (2.0 * f[1] - f[2])) / 3.0;
+            let f: Vec<(f64, f64)> = [1e-6, 4e-6, 1.6e-5].map(scaled).to_vec();
+            let k1 = limit([f[0].0, f[1].0, f[2].0]);
+            let k2 = limit([f[0].1, f[1].1, f[2].1]);
+            println!("{angle}: K_I {k1:.9} {:.9} K_II {k2:.9} {:.9}", k.k1, k.k2);
+            let scale = k.k1.hypot(k.k2);
+            assert!((k1 - k.k1).abs() < 1e-6 * scale, "{angle}: {k1} {}", k.k1);
+            assert!((k2 - k.k2).abs() < 1e-6 * scale, "{angle}: {k2} {}", k.k2);
+        }
+    }
+
+    #[test]
+    fn inclined_edge_cracks_against_the_graded_solution() {
+        // Remote tension sxx = 1. The Gauss-Jacobi solution with its default points (40 to 45
+        // degrees, 80 to 60, 160 beyond) against the graded one, within 0.6% of the larger
+        // factor: measured at most 0.43% (F_I at 60 degrees) and 0.48% (F_I at 75), where the
+        // mouth's non-smooth density slows the global rule (crack.md). The criterion is
+        // 1% against a handbook. Both modes, each relative to the larger factor so that a small
+        // F_II at a small angle does not inflate the measure; the sign of each is checked too.
+        println!("| angle | graded F_I, F_II | default points F_I, F_II | differences |");
+        for angle in [0.0, 15.0, 30.0, 45.0, 60.0, 75.0] {
+            let (g1, g2) = factors(angle, |_, _| [1.0, 0.0, 0.0]);
+            let s = solver(angle, default_points(angle));
+            let (n, t): (Vec<f64>, Vec<f64>) = s
+                .distances()
+                .iter()
+                .map(|_| s.resolve(1.0, 0.0, 0.0))
+                .unzip();
+            let k = s.open(&n, &t).unwrap();
+            let f = (PI * s.crack().length()).sqrt();
+            let (h1, h2) = (k.k1 / f, k.k2 / f);
+            let scale = g1.max(g2.abs());
+            let (d1, d2) = ((h1 - g1) / scale, (h2 - g2) / scale);
+            println!(
+                "| {angle} | {g1:.6}, {g2:.6} | {h1:.6}, {h2:.6} | {:+.3}%, {:+.3}% |",
+                100.0 * d1,
+                100.0 * d2
+            );
+            assert!(d1.abs() < 6e-3 && d2.abs() < 6e-3, "{angle}: {d1} {d2}");
+            assert!(g1 > 0.0 && (angle == 0.0 || g2 > 0.0) && h2 * g2 >= 0.0);
+        }
     }
 }

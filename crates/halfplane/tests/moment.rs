@@ -29,6 +29,20 @@ fn reference_with(m1: f64, m2: f64) -> Cycle {
     Cycle::new(with_moment(p1, m1), with_moment(p2, m2))
 }
 
+/// Two cycles of Q and sigma between -/+ (q, sigma) at constant P, with the pressure's centroid
+/// at `e0` throughout (M = e0 P, the ramp included), 20 increments per half.
+fn fixed_centroid(normal: f64, q: f64, sigma: f64, e0: f64) -> History {
+    History::in_phase(
+        with_moment(point(normal, -q, -sigma), e0 * normal),
+        with_moment(point(normal, q, sigma), e0 * normal),
+        2,
+        20,
+        Ramp::NormalFirst,
+        10,
+    )
+    .unwrap()
+}
+
 fn close(a: f64, b: f64, scale: f64, what: &str) {
     assert!(
         (a - b).abs() <= 1e-10 * scale,
@@ -238,4 +252,254 @@ fn a_moment_beyond_a_table_is_refused_naming_the_point() {
     assert_eq!(field, "cycle.point2.moment");
     assert_eq!(value, 900.0);
     assert!(largest < 900.0 && largest > 0.0, "largest {largest}");
+}
+
+#[test]
+fn the_edge_test_under_a_moment_is_where_marching_stops_slipping_at_the_start_of_a_half() {
+    // Hertz, (1000, -250, 0, M = 0) -> (1400, 250, 0, M2). At the start of the rising half the
+    // right edge's pressure coefficient changes by dP_right = dP + 2 dM/a1 (c = 0 at point 1), so
+    // slip starts there only while dS = dQ = 500 > f dP_right, i.e. M2 < (dQ/f - dP) a1/2 =
+    // 164.9. Below it the analysis is accepted and marching slips at the right edge from the
+    // first increment; above it the analysis refuses the cycle, naming half 1 and the right edge,
+    // and marching shows the right edge sticking (no slip zone, within half a cell) over the
+    // first increments: the assumption the analysis needs does fail there.
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let a1 = c.half_width(1000.0).unwrap();
+    let boundary = (500.0 / 0.6 - 400.0) * a1 / 2.0;
+    assert!((boundary - 164.9).abs() < 0.1, "{boundary}");
+    for (m2, accepted) in [(150.0, true), (200.0, false)] {
+        let cycle = Cycle::new(
+            point(1000.0, -250.0, 0.0),
+            with_moment(point(1400.0, 250.0, 0.0), m2),
+        );
+        let verdict = steady::analyse(&c, &cycle, &SteadyOptions::default());
+        match (&verdict, accepted) {
+            (Ok(s), true) => assert_eq!(s.regime, Regime::PartialSlip),
+            (
+                Err(Error::SlipReversesInHalf {
+                    half: halfplane::Half::First,
+                    edge: Edge::Right,
+                    fraction,
+                    ..
+                }),
+                false,
+            ) => assert_eq!(*fraction, 0.0),
+            _ => panic!("M2 = {m2}: {verdict:?}"),
+        }
+        let steps = 40;
+        let history =
+            History::in_phase(cycle.low(), cycle.high(), 2, steps, Ramp::NormalFirst, 10).unwrap();
+        let r = march(
+            &c,
+            &history,
+            &MarchOptions::default().with_cells(400).unwrap(),
+            |_, _| {},
+        )
+        .unwrap();
+        let w = r.x[1] - r.x[0];
+        let start = history.cycles().unwrap().first_step() + 2 * steps;
+        // The second cycle's rising half: its first three increments.
+        let right_slip: Vec<f64> = r.steps[start..start + 3]
+            .iter()
+            .map(|s| (s.ends.right - s.largest_stick().unwrap()[1]) / w)
+            .collect();
+        if accepted {
+            assert!(
+                right_slip.iter().all(|&cells| cells > 1.0),
+                "M2 = {m2}: the right edge must slip from the start: {right_slip:?} cells"
+            );
+        } else {
+            assert!(
+                right_slip.iter().all(|&cells| cells < 0.5),
+                "M2 = {m2}: the right edge sticks at the start: {right_slip:?} cells"
+            );
+        }
+    }
+}
+
+#[test]
+fn matching_takes_the_chosen_edges_intensity_and_a_moved_hertz_contact_matches_as_centred() {
+    use halfplane::matching::{match_cycle, match_cycle_at, Mode};
+    let hertz = contact(Profile::hertz(RADIUS).unwrap());
+    let test = contact(Profile::hertz(80.0).unwrap());
+    // A Hertz prototype under a constant centroid is the centred one moved: whichever edge is
+    // matched, the test (without a moment) is the centred prototype's test, to rounding.
+    let plain = theory_cycle();
+    let (p1, p2) = plain.as_given();
+    let moved = Cycle::new(
+        with_moment(p1, 0.2 * p1.normal()),
+        with_moment(p2, 0.2 * p2.normal()),
+    );
+    let reference = match_cycle(&hertz, &plain, &test, Mode::Asymptotic).unwrap();
+    for edge in Edge::BOTH {
+        let m = match_cycle_at(&hertz, &moved, &test, Mode::Asymptotic, Some(edge)).unwrap();
+        let (a, b) = (m.test.cycle.as_given(), reference.test.cycle.as_given());
+        for (x, y) in [(a.0, b.0), (a.1, b.1)] {
+            close(x.normal(), y.normal(), y.normal(), "matched P");
+            close(x.shear(), y.shear(), y.normal(), "matched Q");
+            close(x.bulk(), y.bulk(), y.bulk().abs().max(1.0), "matched sigma");
+        }
+    }
+    // The dovetail-like pad: K_N differs at its edges; the test takes the chosen edge's, and K_T
+    // at both edges still match.
+    let pad = contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap());
+    let cycle = Cycle::new(
+        with_moment(point(1000.0, -250.0, -20.0), 60.0),
+        with_moment(point(1400.0, 250.0, 20.0), 150.0),
+    );
+    let mut tests = Vec::new();
+    for edge in Edge::BOTH {
+        let m = match_cycle_at(&pad, &cycle, &test, Mode::Asymptotic, Some(edge)).unwrap();
+        assert_eq!(m.prototype.edge, edge);
+        for p in GivenPoint::BOTH {
+            let k = m.prototype.edges[p].contact.normal_intensity(edge);
+            close(
+                m.normal_intensity[p].test,
+                k,
+                k,
+                "matched K_N at the chosen edge",
+            );
+            for e in Edge::BOTH {
+                let c = m.shear_intensity[e][p];
+                close(c.test, c.prototype, c.prototype.abs(), "K_T at both edges");
+            }
+        }
+        tests.push(m.test.cycle.as_given().1.normal());
+    }
+    // The two edges' K_N differ, so the two tests differ.
+    assert!((tests[0] - tests[1]).abs() > 1e-3 * tests[0], "{tests:?}");
+    // By default, the edge whose K_T changes more.
+    let m = match_cycle(&pad, &cycle, &test, Mode::Asymptotic).unwrap();
+    let range = |e: Edge| {
+        (m.prototype.edges.second.shear_intensity[e] - m.prototype.edges.first.shear_intensity[e])
+            .abs()
+    };
+    let larger = if range(Edge::Left) >= range(Edge::Right) {
+        Edge::Left
+    } else {
+        Edge::Right
+    };
+    assert_eq!(m.prototype.edge, larger);
+}
+
+#[test]
+fn marched_stresses_under_a_moment_have_the_contacts_pressure_at_the_surface() {
+    // An off-centre contact (a punch with unequal radii under P and M, pressed alone): the
+    // stress field built from the march's traction has szz = -p(x) at the surface, with p the
+    // normal problem's own pressure (`Contact::pressure_at`), so the traction's node form carries
+    // the moved ends. At every cell centre inside the contact, just below the surface (1e-9 of the
+    // contact's size), to 1e-6 of the peak pressure.
+    use halfplane::stress;
+    let c = contact(Profile::flat_rounded_asymmetric(0.3, 40.0, 70.0).unwrap());
+    let load = with_moment(point(1200.0, 0.0, 0.0), 150.0);
+    let history = History::from_moment_rows(&[[1200.0, 0.0, 0.0, 150.0]]).unwrap();
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let kept = stress::marched(&c, &history, &options, &[1]).unwrap();
+    let state = c.contact_at(&load).unwrap();
+    assert_eq!(kept[0].ends, state.ends());
+    let r = march(&c, &history, &options, |_, _| {}).unwrap();
+    let x: Vec<f64> =
+        r.x.iter()
+            .copied()
+            .filter(|&x| x > state.end(Edge::Left) && x < state.end(Edge::Right))
+            .collect();
+    let z = vec![1e-9 * state.half_width(); x.len()];
+    let field = stress::field(&kept[0].traction, 0.0, &c.material(), &x, &z).unwrap();
+    let peak = x
+        .iter()
+        .map(|&x| c.pressure_at(&state, x).unwrap())
+        .fold(0.0, f64::max);
+    for (i, &xi) in x.iter().enumerate() {
+        let p = c.pressure_at(&state, xi).unwrap();
+        assert!(
+            (field.szz[i] + p).abs() <= 1e-6 * peak,
+            "x = {xi}: szz {} against -p {}",
+            field.szz[i],
+            -p
+        );
+    }
+}
+
+#[test]
+fn a_crack_at_the_edge_of_a_moved_hertz_contact_is_the_centred_ones() {
+    // Hertz under a constant centroid e0 is the centred contact moved by e0: the crack at its
+    // right edge sees the same stress as the centred contact's, so K_I and K_II agree within the
+    // marching discretisation (the two grids differ: the moved contact's is spanned from its own
+    // ends, 200 cells either way, so 1% of the range is the bound).
+    use halfplane::crack::{self, CrackOptions, Position};
+    use halfplane::fatigue::FatigueConstants;
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let constants = FatigueConstants::default()
+        .with_threshold(160.0)
+        .and_then(|k| k.with_endurance_range(700.0))
+        .unwrap();
+    let e0 = 0.25;
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let crack = CrackOptions::new(Position::RightEdge, 0.0, vec![0.05], 0.0).unwrap();
+    let history = |e| fixed_centroid(1000.0, 300.0, 60.0, e);
+    let centred = crack::analyse(&c, &history(0.0), &options, &constants, &crack).unwrap();
+    let moved = crack::analyse(&c, &history(e0), &options, &constants, &crack).unwrap();
+    close(
+        moved.mouth,
+        centred.mouth + e0,
+        1.0,
+        "the mouth moves with the contact",
+    );
+    let (a, b) = (&moved.rows[0], &centred.rows[0]);
+    for (x, y, what) in [
+        (a.delta_k1, b.delta_k1, "dK_I"),
+        (a.delta_k2, b.delta_k2, "dK_II"),
+    ] {
+        assert!(
+            (x - y).abs() <= 1e-2 * y.abs().max(1.0),
+            "{what}: moved {x} against centred {y}"
+        );
+    }
+}
+
+#[test]
+fn fatigue_maxima_of_a_moved_hertz_contact_are_the_centred_ones_moved() {
+    // As for the crack: Hertz under a constant centroid e0 is the centred contact moved by e0.
+    // The fatigue grid is centred on the cycle's contacts, so its points move with them; every
+    // parameter's maximum must agree within the marching discretisation (the grids of the two
+    // marches differ: 1% of each value), at the same depth, e0 further along x.
+    use halfplane::fatigue::{self, FatigueConstants, FatigueGrid};
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let constants = FatigueConstants::default()
+        .with_fatigue_strength(1800.0)
+        .and_then(|k| k.with_fatigue_strength_exponent(-0.1))
+        .and_then(|k| k.with_fatigue_ductility(0.5))
+        .and_then(|k| k.with_fatigue_ductility_exponent(-0.6))
+        .and_then(|k| k.with_shear_fatigue_strength(1000.0))
+        .and_then(|k| k.with_shear_fatigue_ductility(0.8))
+        .and_then(|k| k.with_findley_k(0.25))
+        .and_then(|k| k.with_yield_stress(900.0))
+        .unwrap();
+    let e0 = -0.15;
+    let options = MarchOptions::default().with_cells(200).unwrap();
+    let grid = FatigueGrid::new(21, 6, 1.5, 0.5).unwrap();
+    let history = |e| fixed_centroid(1000.0, 300.0, 40.0, e);
+    let a = fatigue::analyse(&c, &history(0.0), &options, &constants, &grid).unwrap();
+    let b = fatigue::analyse(&c, &history(e0), &options, &constants, &grid).unwrap();
+    close(b.grid_x[10], a.grid_x[10] + e0, 1.0, "the grid's centre");
+    assert_eq!(a.parameters.len(), b.parameters.len());
+    let step = a.grid_x[1] - a.grid_x[0];
+    for (p, m) in a.parameters.iter().zip(&b.parameters) {
+        assert_eq!(p.parameter, m.parameter);
+        assert!(
+            (p.value - m.value).abs() <= 1e-2 * p.value.abs(),
+            "{}: centred {} against moved {}",
+            p.parameter.name(),
+            p.value,
+            m.value
+        );
+        assert!(
+            (m.x - (p.x + e0)).abs() <= step + 1e-12 && (m.z - p.z).abs() <= 1e-12,
+            "{}: at x = {}, z = {} against {} moved",
+            p.parameter.name(),
+            m.x,
+            m.z,
+            p.x
+        );
+    }
 }

@@ -1,5 +1,5 @@
 """Curves of :mod:`halfplane.plot`: the load space, the slip-zone map, the stick zone over a
-cycle and the fields of a march."""
+cycle, the fields of a march and a crack's stress intensity ranges against its length."""
 
 from __future__ import annotations
 
@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from .._batch import steady_batch
+from .._crack import CrackResult
 from .._results import MarchResult, SteadyResult
 from ._base import (
     Floats,
@@ -268,8 +269,10 @@ def evolution(
         if marched is not None:
             ax.plot(marched[0], marched[2] if side > 0 else marched[1], "o", ms=3.5, color="C2",
                     label="stick boundary (time marching)", zorder=1)
-        ax.plot(t, side * floats(frame, "half_width"), "-", color="0.25", lw=1.6,
-                label="contact edge")
+        # The contact's own ends (they move apart from ±a under a moment); ±a for an older frame.
+        edge = "contact_right" if side > 0 else "contact_left"
+        ends = floats(frame, edge) if edge in frame else side * floats(frame, "half_width")
+        ax.plot(t, ends, "-", color="0.25", lw=1.6, label="contact edge")
         ax.plot(t, floats(frame, column), "-", color="C0", lw=1.8,
                 label="stick boundary (exact)")
         ax.plot(t, floats(frame, "asymptotic_" + column), "--", color="C1", lw=1.5,
@@ -349,3 +352,37 @@ def march_fields(
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7, loc="best")
     return fig
+
+
+def crack_growth(result: CrackResult, *, ax: Axes | None = None) -> Axes:
+    """A crack's stress intensity ranges against its length with the short-crack threshold, on
+    log-log axes, as ``halfplane plot crack``: the effective range ``delta_k_eff`` (the
+    verdict's), ``delta_k1`` and ``delta_k2``, and El Haddad's threshold (dashed); where the
+    crack arrests, a vertical line at the arrest length. ``result`` is :func:`halfplane.crack`'s.
+    Lengths and ranges not above zero (a range of zero: the tip never opens) are left out of
+    the logarithmic axes. Returns the Axes."""
+    rows = result.rows
+    ax = new_axes(ax)
+    length = floats(rows, "length")
+    k = result.intensity_unit
+    for column, style, colour, label in (
+        ("delta_k_eff", "-o", "C0", "ΔK effective"),
+        ("delta_k1", "-", "C1", "ΔK_I"),
+        ("delta_k2", "-", "C2", "ΔK_II"),
+        ("threshold", "--", "0.2", "threshold ΔK_th(l) (El Haddad)"),
+    ):
+        values = floats(rows, column)
+        keep = (values > 0.0) & (length > 0.0)
+        ax.plot(length[keep], values[keep], style, color=colour, ms=3.5, lw=1.6, label=label)
+    if result.arrest_length is not None:
+        ax.axvline(result.arrest_length, color="C3", lw=1.0,
+                   label=f"arrests at {result.arrest_length:.4g} {result.units.length}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel(f"crack length l ({result.units.length})")
+    ax.set_ylabel(f"stress intensity range ΔK ({k})")
+    ax.set_title(f"Crack at x = {result.position:.4g} {result.units.length}, "
+                 f"{result.angle:.1f}° from the normal: {result.verdict}")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="best")
+    return ax

@@ -133,8 +133,14 @@ def stress_map(
     ax = new_axes(ax, (7.5, 5.7 * ratio + 1.4))
     _contour_field(ax, gx, gz, values, levels, f"{name} ({stress})")
     a = result.half_width
-    ax.plot([-a, a], [0.0, 0.0], "-", color="k", lw=4, solid_capstyle="butt",
-            label=f"contact, a = {plain(a)} {length}", zorder=4)
+    b1, b2 = result.contact_left, result.contact_right
+    label = (
+        f"contact, a = {plain(a)} {length}"
+        if b1 == -b2
+        else f"contact [{plain(b1)}, {plain(b2)}] {length}"
+    )
+    ax.plot([b1, b2], [0.0, 0.0], "-", color="k", lw=4, solid_capstyle="butt",
+            label=label, zorder=4)
     peak = int(np.nanargmax(values))
     px, pz = float(gx.flat[peak]), float(gz.flat[peak])
     peak_text = (

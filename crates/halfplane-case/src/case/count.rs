@@ -1,7 +1,8 @@
 //! Counts as the case file gives them ([`RawCount`]), checked into a `usize` with an error that
 //! names the field, the value and the valid range ([`count_in`]).
 
-use anyhow::{bail, Result};
+use super::FieldError;
+use anyhow::Result;
 use serde::{Deserialize, Deserializer};
 
 /// A count as the case file gives it. Any TOML value is taken here and checked when resolved,
@@ -70,7 +71,13 @@ pub(crate) fn count_in(value: &RawCount, field: &str, min: usize, max: usize) ->
                 RawCount::Float(f) => halfplane::written::Written(*f).to_string(),
                 RawCount::Other(s) => s.clone(),
             };
-            bail!("invalid {field} = {shown}: must be a whole number from {min} to {max}")
+            Err(FieldError {
+                field: field.into(),
+                message: format!(
+                    "invalid {field} = {shown}: must be a whole number from {min} to {max}"
+                ),
+            }
+            .into())
         }
     }
 }

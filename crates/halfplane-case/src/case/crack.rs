@@ -3,7 +3,10 @@
 
 use super::count::{count_in, RawCount};
 use anyhow::{anyhow, bail, Result};
-use halfplane::crack::{CrackOptions, EffectiveRange, Position, MAX_POINTS, MIN_POINTS};
+use halfplane::crack::{
+    CrackOptions, EffectiveRange, Position, CRITICAL_PLANE_PARAMETERS, MAX_POINTS, MIN_POINTS,
+};
+use halfplane::fatigue::Parameter;
 use toml::Value;
 
 /// Most lengths of a `{ from, to, count }` range.
@@ -14,13 +17,14 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<CrackOptions> {
     let table = table.ok_or_else(|| {
         anyhow!("missing section [crack]: give at least lengths, e.g. lengths = {{ from = 0.005, to = 0.2, count = 20 }}")
     })?;
-    const FIELDS: [&str; 6] = [
+    const FIELDS: [&str; 7] = [
         "position",
         "angle",
         "lengths",
         "face_friction",
         "points",
         "effective_range",
+        "initiation_parameter",
     ];
     if let Some(k) = table.keys().find(|k| !FIELDS.contains(&k.as_str())) {
         bail!(
@@ -37,14 +41,26 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<CrackOptions> {
             None => bail!("invalid crack.position = {v}: must be \"left-edge\", \"right-edge\" or an x value on the surface"),
         },
     };
+    let critical_plane =
+        matches!(table.get("angle"), Some(Value::String(s)) if s == "critical-plane");
     let angle = match table.get("angle") {
         None => 0.0,
-        Some(Value::String(s)) if s == "critical-plane" => bail!(
-            "crack.angle = \"critical-plane\" is not available yet: give the angle in degrees from the surface normal (from -90 to 90, exclusive)"
-        ),
+        Some(_) if critical_plane => 0.0,
         Some(v) => number(v).ok_or_else(|| {
-            anyhow!("invalid crack.angle = {v}: must be an angle in degrees from the surface normal, strictly between -90 and 90")
+            anyhow!("invalid crack.angle = {v}: must be an angle in degrees from the surface normal, strictly between -90 and 90, or \"critical-plane\"")
         })?,
+    };
+    let parameter = match table.get("initiation_parameter") {
+        None => Parameter::Swt,
+        Some(_) if !critical_plane => bail!(
+            "crack.initiation_parameter is used only with angle = \"critical-plane\": remove it, or set that angle"
+        ),
+        Some(v) => v
+            .as_str()
+            .and_then(|s| Parameter::ALL.into_iter().find(|p| p.name() == s))
+            .ok_or_else(|| {
+                anyhow!("invalid crack.initiation_parameter = {v}: must be {CRITICAL_PLANE_PARAMETERS}")
+            })?,
     };
     let lengths = lengths(table.get("lengths"))?;
     let face_friction = match table.get("face_friction") {
@@ -54,6 +70,9 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<CrackOptions> {
         })?,
     };
     let mut options = CrackOptions::new(position, angle, lengths, face_friction)?;
+    if critical_plane {
+        options = options.with_critical_plane(parameter)?;
+    }
     if let Some(v) = table.get("points") {
         let raw: RawCount = v
             .clone()

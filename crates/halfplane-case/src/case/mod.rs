@@ -13,10 +13,12 @@ mod crack;
 mod csv;
 mod fatigue;
 mod table;
+mod wear;
 
 use count::{count_in, RawCount};
 pub use csv::{read_csv, read_csv_with, Table};
 pub use fatigue::FatigueSettings;
+pub use wear::{WearSettings, DEFAULT_SPAN};
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
 const MIN_CELLS: usize = MarchOptions::MIN_CELLS;
@@ -34,6 +36,7 @@ struct RawCase {
     units: Option<crate::units::RawUnits>,
     fatigue: Option<toml::Table>,
     crack: Option<toml::Table>,
+    wear: Option<toml::Table>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -49,10 +52,57 @@ struct RawHistory {
     steps_per_cycle: Option<RawCount>,
     ramp: Option<String>,
     ramp_steps: Option<RawCount>,
-    normal: Option<RawHarmonic>,
-    shear: Option<RawHarmonic>,
-    bulk: Option<RawHarmonic>,
-    moment: Option<RawHarmonic>,
+    normal: Option<RawLoad>,
+    shear: Option<RawLoad>,
+    bulk: Option<RawLoad>,
+    moment: Option<RawLoad>,
+    amplitude: Option<f64>,
+}
+
+/// A load of `[history]`: a number (`kind = "sliding"`) or a harmonic (`kind = "harmonic"`).
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+enum RawLoad {
+    Number(f64),
+    Harmonic(RawHarmonic),
+}
+
+impl RawLoad {
+    /// The harmonic, or the error naming `history.{name}` written as a number.
+    fn harmonic(self, name: &str) -> Result<RawHarmonic> {
+        match self {
+            RawLoad::Harmonic(h) => Ok(h),
+            RawLoad::Number(v) => bail!(
+                "invalid history.{name} = {v}: kind = \"harmonic\" takes {{ mean = ..., amplitude = ..., phase = degrees }}"
+            ),
+        }
+    }
+
+    /// The number, or the error naming `history.{name}` written as a harmonic.
+    fn number(self, name: &str) -> Result<f64> {
+        match self {
+            RawLoad::Number(v) => Ok(v),
+            RawLoad::Harmonic(_) => bail!(
+                "invalid history.{name}: kind = \"sliding\" takes a number (the constant {name})"
+            ),
+        }
+    }
+}
+
+/// A gross-sliding history (`[history] kind = "sliding"`): P (and M, sigma) ramped, then Q rising
+/// to f P, the bodies sliding by `amplitude`, Q falling to -f P, sliding back, each cycle; run by
+/// `halfplane wear` (docs/wear.md).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sliding {
+    /// The constant normal load (with its moment and bulk tension).
+    pub load: LoadPoint,
+    /// The bodies' relative sliding displacement once sliding, beyond the partial-slip onset:
+    /// the distance they slide each way once Q reaches f P (> 0).
+    pub amplitude: f64,
+    /// Increments of Q from -f P to f P and back, per half-cycle.
+    pub steps_per_half: usize,
+    /// Increments of the ramp of P.
+    pub ramp_steps: usize,
 }
 
 #[derive(Debug, Deserialize)]
@@ -121,6 +171,8 @@ pub struct Case {
     pub contact: Contact,
     /// `[cycle]`, if the file has one.
     pub cycle: Option<Cycle>,
+    /// `[history] kind = "sliding"` (then there is no load history: `wear` runs it).
+    pub sliding: Option<Sliding>,
     history: Option<History>,
     /// `history.cycles = "steady"`: march until the cycle repeats (the history holds one cycle,
     /// which the march repeats).
@@ -135,6 +187,8 @@ pub struct Case {
     fatigue: Option<toml::Table>,
     /// `[crack]` as written, resolved by [`Case::crack`] when a command needs it.
     crack: Option<toml::Table>,
+    /// `[wear]` as written, resolved by [`Case::wear`] when a command needs it.
+    wear: Option<toml::Table>,
 }
 
 impl Case {
@@ -151,6 +205,9 @@ impl Case {
     /// The history and, for `history.cycles = "steady"`, the criterion to march it by (the
     /// history then holds its ramp and one cycle, which the march repeats).
     pub fn march_history(&self) -> Result<(History, Option<Steady>)> {
+        if self.sliding.is_some() {
+            bail!("[history] kind = \"sliding\" is run by halfplane wear (and Python's halfplane.wear): its Q is f P while the bodies slide, which a load history cannot step to; give kind = \"cycle\", \"harmonic\" or a file for this command");
+        }
         let history = self.history.clone().ok_or_else(|| anyhow!("missing section [history]: give file = \"history.csv\" (or its rows as data = \"\"\"...\"\"\"), or kind = \"cycle\" (with [cycle]) or kind = \"harmonic\""))?;
         Ok((history, self.until_steady.then_some(self.steady)))
     }
@@ -192,6 +249,55 @@ impl Case {
         crack::resolve(self.crack.as_ref())
     }
 
+    /// `[wear]`: the wear law, the cycles and their checkpoints (`halfplane wear`).
+    pub fn wear(&self) -> Result<WearSettings> {
+        wear::resolve(self.wear.as_ref())
+    }
+
+    /// The march `halfplane wear` runs: the sliding history, or the ramp and first cycle of the
+    /// load history (which must have exactly one cycle: the physical ones are `[wear] cycles`),
+    /// on a grid `span` times the unworn contact with `cells` cells (`--cells`).
+    pub fn worn_march(&self, span: f64, cells: Option<usize>) -> Result<halfplane::march::Worn> {
+        let options = self.solver_with_cells(cells)?;
+        if let Some(s) = &self.sliding {
+            return Ok(halfplane::march::Worn::sliding(
+                &self.contact,
+                s.load,
+                s.amplitude,
+                s.steps_per_half,
+                s.ramp_steps,
+                &options,
+                span,
+            )?);
+        }
+        let history = self.history()?;
+        match history.cycles() {
+            Some(c) if c.count() == 1 => {}
+            Some(c) => bail!("invalid history.cycles = {}: wear marches the history's one cycle again and again: give cycles = 1 (the physical cycles are [wear] cycles)", c.count()),
+            None => bail!("wear needs a cyclic [history] (kind = \"cycle\", \"harmonic\" or \"sliding\"), not rows from a file"),
+        }
+        Ok(halfplane::march::Worn::new(
+            &self.contact,
+            &history,
+            &options,
+            span,
+        )?)
+    }
+
+    /// `[crack]` with the fields of `overrides` put in (added, or replacing those written),
+    /// resolved and checked exactly as the section itself (Python's `halfplane.crack`).
+    pub fn crack_with(&self, overrides: &toml::Table) -> Result<halfplane::crack::CrackOptions> {
+        let mut table = self.crack.clone().unwrap_or_default();
+        if overrides.contains_key("angle") {
+            // A new angle replaces the critical-plane choice written with the old one.
+            table.remove("initiation_parameter");
+        }
+        for (k, v) in overrides {
+            table.insert(k.clone(), v.clone());
+        }
+        crack::resolve(Some(&table))
+    }
+
     /// The cycle, or an error saying the `[cycle]` section is needed.
     pub fn cycle(&self) -> Result<Cycle> {
         self.cycle.ok_or_else(|| anyhow!("missing section [cycle]: give point1 and point2, e.g. point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}"))
@@ -211,8 +317,34 @@ fn reject_unused(section: &str, kind: &str, used: &[&str], given: &[(&str, bool)
     Ok(())
 }
 
+/// An error about one field of the case, which it names as the file spells it: a number missing,
+/// a count that is not a whole number in range. Its own type (its message is the text the command
+/// prints), so that a front end can show the message beside that field (the web page's form)
+/// without reading the text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FieldError {
+    /// The field, e.g. `material.youngs_modulus`.
+    pub field: String,
+    /// The whole message, which names the field.
+    pub message: String,
+}
+
+impl std::fmt::Display for FieldError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for FieldError {}
+
 fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
-    value.ok_or_else(|| anyhow!("missing field {field}: give {what}"))
+    value.ok_or_else(|| {
+        FieldError {
+            field: field.into(),
+            message: format!("missing field {field}: give {what}"),
+        }
+        .into()
+    })
 }
 
 /// Reads and resolves a case file.
@@ -292,7 +424,11 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.
-    let (history, until_steady, steady) = match raw.history {
+    let (sliding, raw_history) = match raw.history {
+        Some(h) if h.kind.as_deref() == Some("sliding") => (Some(resolve_sliding(h)?), None),
+        other => (None, other),
+    };
+    let (history, until_steady, steady) = match raw_history {
         Some(h) => {
             let (until_steady, steady) = resolve_steady(&h)?;
             let history = resolve_history(h, cycle.as_ref(), until_steady, dir)?;
@@ -303,6 +439,7 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
     Ok(Case {
         contact: Contact::new(profile, material, friction),
         cycle,
+        sliding,
         history,
         until_steady,
         steady,
@@ -310,6 +447,7 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         units: crate::units::Units::resolve(raw.units)?,
         fatigue: raw.fatigue,
         crack: raw.crack,
+        wear: raw.wear,
     })
 }
 
@@ -337,6 +475,66 @@ fn resolve_steady(h: &RawHistory) -> Result<(bool, Steady)> {
         steady = steady.with_tolerance(t)?;
     }
     Ok((until_steady, steady))
+}
+
+/// `[history] kind = "sliding"`: normal (> 0), amplitude (> 0), steps_per_half and ramp_steps
+/// (default 20), optional moment and bulk, and `cycles = 1` if given (the physical cycles are
+/// `[wear] cycles`); nothing else.
+fn resolve_sliding(h: RawHistory) -> Result<Sliding> {
+    let used = [
+        "normal",
+        "moment",
+        "bulk",
+        "amplitude",
+        "steps_per_half",
+        "ramp_steps",
+        "cycles",
+    ];
+    let given = [
+        ("file", h.file.is_some()),
+        ("data", h.data.is_some()),
+        ("max_cycles", h.max_cycles.is_some()),
+        ("steady_tolerance", h.steady_tolerance.is_some()),
+        ("steps_per_cycle", h.steps_per_cycle.is_some()),
+        ("ramp", h.ramp.is_some()),
+        ("shear", h.shear.is_some()),
+    ];
+    reject_unused("history", "sliding", &used, &given)?;
+    let max = halfplane::history::MAX_INCREMENTS;
+    let normal = h
+        .normal
+        .ok_or_else(|| {
+            anyhow!("missing field history.normal: give the constant normal load P > 0 (N/mm)")
+        })?
+        .number("normal")?;
+    let number = |v: Option<RawLoad>, name: &str| v.map_or(Ok(0.0), |v| v.number(name));
+    let (bulk, moment) = (number(h.bulk, "bulk")?, number(h.moment, "moment")?);
+    let load = LoadPoint::new("history", normal, 0.0, bulk)?.with_moment("history", moment)?;
+    let amplitude = h.amplitude.ok_or_else(|| {
+        anyhow!("missing field history.amplitude: give the distance the bodies slide each way once Q reaches f P (> 0, mm)")
+    })?;
+    if !(amplitude.is_finite() && amplitude > 0.0) {
+        bail!("invalid history.amplitude = {amplitude}: must be a finite sliding displacement > 0 (mm)");
+    }
+    let steps_per_half = match &h.steps_per_half {
+        Some(v) => count_in(v, "history.steps_per_half", 1, max)?,
+        None => bail!(
+            "missing field history.steps_per_half: give the increments of Q per half-cycle >= 1"
+        ),
+    };
+    let ramp_steps = match &h.ramp_steps {
+        Some(v) => count_in(v, "history.ramp_steps", 1, max)?,
+        None => 20,
+    };
+    if let Some(v) = &h.cycles {
+        count_in(v, "history.cycles", 1, 1)?;
+    }
+    Ok(Sliding {
+        load,
+        amplitude,
+        steps_per_half,
+        ramp_steps,
+    })
 }
 
 fn resolve_history(
@@ -372,7 +570,7 @@ fn resolve_history(
             "moment",
         ],
         other => bail!(
-            "invalid history.kind = \"{other}\": must be one of \"file\", \"cycle\", \"harmonic\""
+            "invalid history.kind = \"{other}\": must be one of \"file\", \"cycle\", \"harmonic\", \"sliding\""
         ),
     };
     let given = [
@@ -389,6 +587,7 @@ fn resolve_history(
         ("shear", h.shear.is_some()),
         ("bulk", h.bulk.is_some()),
         ("moment", h.moment.is_some()),
+        ("amplitude", h.amplitude.is_some()),
     ];
     reject_unused("history", &kind, used, &given)?;
     let max = halfplane::history::MAX_INCREMENTS;
@@ -441,11 +640,12 @@ fn resolve_history(
             )?
         }
         _ => {
-            let harmonic = |raw: Option<RawHarmonic>, name: &str| -> Result<Harmonic> {
+            let harmonic = |raw: Option<RawLoad>, name: &str| -> Result<Harmonic> {
                 let field = format!("history.{name}");
                 let Some(r) = raw else {
                     return Ok(Harmonic::new(&field, 0.0, 0.0, 0.0)?);
                 };
+                let r = r.harmonic(name)?;
                 let mean = r.mean.ok_or_else(|| {
                     anyhow!("missing field history.{name}.mean: give the mean value")
                 })?;

@@ -4,7 +4,7 @@
 use super::steady::{profile_report, ProfileReport};
 use crate::matching::MatchConfig;
 use crate::units::{Quantity, Units};
-use halfplane::labels::{PerEdge, PerPoint};
+use halfplane::labels::{Edge, PerEdge, PerPoint};
 use halfplane::matching::{Compared, MatchReport, Side};
 use serde::Serialize;
 use std::fmt::Write;
@@ -15,6 +15,12 @@ pub struct MatchReportOut {
     mode: &'static str,
     /// The matched quantities, in words.
     matched: &'static str,
+    /// The prototype's edge whose K_N the test takes ("left" or "right"; both edges' are equal
+    /// without a moment on a symmetric prototype).
+    matched_edge: &'static str,
+    /// Whether the prototype's two edges have different K_N (table only).
+    #[serde(skip)]
+    edges_differ: bool,
     prototype_file: String,
     test_file: String,
     prototype: SideOut,
@@ -44,6 +50,7 @@ struct PointOut {
     normal: f64,
     shear: f64,
     bulk: f64,
+    moment: f64,
 }
 
 #[derive(Serialize, Clone, Copy)]
@@ -94,6 +101,7 @@ fn side(s: &Side) -> SideOut {
         normal: p.normal(),
         shear: p.shear(),
         bulk: p.bulk(),
+        moment: p.moment(),
     };
     SideOut {
         regime: s.steady.regime.as_str(),
@@ -121,6 +129,10 @@ impl MatchReportOut {
                 }
                 _ => "K_N at both points; K_T at both edges at both points",
             },
+            matched_edge: report.prototype.edge.as_str(),
+            edges_differ: report.prototype.edges.iter().any(|e| {
+                e.contact.normal_intensity(Edge::Left) != e.contact.normal_intensity(Edge::Right)
+            }),
             prototype_file: config.prototype_path.display().to_string(),
             test_file: config.output.display().to_string(),
             prototype: side(&report.prototype),
@@ -146,6 +158,13 @@ impl MatchReportOut {
         let mut o = String::new();
         let u = &self.units;
         let _ = writeln!(o, "match        {} ({})", self.mode, self.matched);
+        if self.edges_differ {
+            let _ = writeln!(
+                o,
+                "edge         K_N at the prototype's {} edge (its two edges' differ under the moment; --edge chooses)",
+                self.matched_edge
+            );
+        }
         for (name, s, file) in [
             ("prototype", &self.prototype, &self.prototype_file),
             ("test", &self.test, &self.test_file),

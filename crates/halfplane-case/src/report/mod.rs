@@ -9,6 +9,7 @@ pub mod march;
 pub mod matching;
 pub mod steady;
 pub mod stress;
+pub mod wear;
 
 use crate::units::{Quantity, Units};
 use std::fmt::Write;

@@ -33,10 +33,6 @@ pub(crate) struct ProfileReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     radius: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    left_radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    right_radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     flat_half_width: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     coefficient: Option<f64>,
@@ -45,6 +41,10 @@ pub(crate) struct ProfileReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     rows: Option<usize>,
     kinks: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    left_radius: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    right_radius: Option<f64>,
 }
 
 #[derive(Serialize, Clone, Copy)]

@@ -51,6 +51,12 @@ pub struct StressReport {
     pub bulk: f64,
     /// Contact half-width.
     pub half_width: f64,
+    /// M there (0 without a moment).
+    pub moment: f64,
+    /// The contact's ends b1 and b2 (`-a` and `a` when centred).
+    pub contact_left: f64,
+    /// b2.
+    pub contact_right: f64,
     /// One row per point, in order.
     pub points: Vec<StressRow>,
     /// Unit names.
@@ -65,13 +71,20 @@ impl StressReport {
 
     /// A table: a line naming the increment, then the rows.
     pub fn table(&self) -> String {
+        let contact = if self.contact_left == -self.contact_right {
+            format!("a = {:.6}", self.half_width)
+        } else {
+            format!(
+                "M = {}; contact [{:.6}, {:.6}]",
+                self.moment, self.contact_left, self.contact_right
+            )
+        };
         format!(
-            "stresses at step {} (P = {}, Q = {}, sigma = {}; a = {:.6})\n{}",
+            "stresses at step {} (P = {}, Q = {}, sigma = {}; {contact})\n{}",
             self.step,
             self.normal,
             self.shear,
             self.bulk,
-            self.half_width,
             super::table(&StressRow::COLUMNS, &self.points, &self.units)
         )
     }
@@ -173,6 +186,9 @@ mod tests {
             shear: -300.0,
             bulk: 60.0,
             half_width: 0.76,
+            moment: 0.0,
+            contact_left: -0.76,
+            contact_right: 0.76,
             points,
             units: Units::default(),
         }

@@ -47,6 +47,8 @@ pub fn describe(column: &str) -> String {
         ["profile", "coefficient"] => with("power-law coefficient B", ""),
         ["profile", "exponent"] => with("power-law exponent k", ""),
         ["regime"] => "regime".into(),
+        ["crack", "verdict"] => "crack verdict".into(),
+        ["crack", "arrest_length"] => with("crack arrest length", LENGTH),
         ["stick_left"] => with("stick zone left end", LENGTH),
         ["stick_right"] => with("stick zone right end", LENGTH),
         ["final_stick_left"] => with("final stick zone left end", LENGTH),
@@ -100,8 +102,11 @@ fn filter(text: &str) -> Result<(String, f64)> {
     Ok((path.trim().to_string(), value))
 }
 
-/// The colour of the rows `keep`: categories for `regime` (the one text column a sweep writes
-/// for colouring), numbers for any other column. Text anywhere else is an error naming the
+/// The text columns a sweep writes for colouring: drawn as categories.
+const CATEGORIES: [&str; 2] = ["regime", "crack.verdict"];
+
+/// The colour of the rows `keep`: categories for `regime` and `crack.verdict` (the text columns
+/// a sweep writes for colouring), numbers for any other column. Text anywhere else is an error naming the
 /// column (the `error` column, or a cell a sweep never writes), since drawing it as categories
 /// or skipping it would give a map that looks valid; rows without a value (failed cases, the
 /// stick zone in gross sliding) are drawn as "no value", and stderr says how many.
@@ -112,16 +117,16 @@ fn color(args: &DesignMapArgs, table: &read::SweepTable, keep: &[usize]) -> Resu
         .names
         .iter()
         .map(String::as_str)
-        .filter(|n| !matches!(*n, "regime" | "error"))
+        .filter(|n| *n != "error" && !CATEGORIES.contains(n))
         .collect();
     if name == "error" {
         bail!(
-            "--color error: column error of {file} holds text (each failed row's message), not numbers; --color takes regime or a numeric column ({})",
+            "--color error: column error of {file} holds text (each failed row's message), not numbers; --color takes regime, crack.verdict or a numeric column ({})",
             numeric.join(", ")
         );
     }
     match &table.columns[2] {
-        Values::Text(v) if name == "regime" => Ok(MapColor::Category(
+        Values::Text(v) if CATEGORIES.contains(&name.as_str()) => Ok(MapColor::Category(
             keep.iter().map(|&i| v[i].clone()).collect(),
         )),
         Values::Text(v) => {
@@ -134,13 +139,13 @@ fn color(args: &DesignMapArgs, table: &read::SweepTable, keep: &[usize]) -> Resu
                     v[row]
                 ),
                 _ => bail!(
-                    "--color {name}: column {name} of {file} holds text, not numbers; --color takes regime or a numeric column ({})",
+                    "--color {name}: column {name} of {file} holds text, not numbers; --color takes regime, crack.verdict or a numeric column ({})",
                     numeric.join(", ")
                 ),
             }
         }
-        Values::Number(_) if name == "regime" => bail!(
-            "--color regime: column regime of {file} holds numbers, not regime names; this is not a sweep's output"
+        Values::Number(_) if CATEGORIES.contains(&name.as_str()) => bail!(
+            "--color {name}: column {name} of {file} holds numbers, not names; this is not a sweep's output"
         ),
         Values::Number(v) => {
             let values: Vec<Option<f64>> = keep.iter().map(|&i| v[i]).collect();

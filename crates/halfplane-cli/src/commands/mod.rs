@@ -13,6 +13,7 @@ pub mod plot;
 pub mod steady;
 pub mod stress;
 pub mod sweep;
+pub mod wear;
 
 use crate::args::{Command, PlotCommand};
 use anyhow::Result;
@@ -41,6 +42,7 @@ pub fn run(command: &Command) -> Result<()> {
         #[cfg(not(feature = "plot"))]
         Command::Plot(_) => anyhow::bail!(NO_PLOT),
         Command::Sweep(a) => sweep::run(&sweep::SweepConfig::resolve(a)?),
+        Command::Wear(a) => wear::run(wear::WearConfig::resolve(a)?),
     }
 }
 

@@ -95,6 +95,17 @@ pub enum FigureConfig {
         /// The parameter to map; `None`: the surface profiles.
         parameter: Option<Parameter>,
     },
+    /// The crack: its ranges against length, and the stress map with the crack.
+    Crack {
+        /// The cyclic history of `[history]`.
+        history: History,
+        /// `[solver]` with `--cells` applied.
+        options: MarchOptions,
+        /// `[fatigue]`'s constants (the threshold's).
+        constants: halfplane::fatigue::FatigueConstants,
+        /// `[crack]`.
+        crack: halfplane::crack::CrackOptions,
+    },
 }
 
 /// Points of the stress map along x and into the depth.
@@ -233,6 +244,19 @@ impl PlotConfig {
                 };
                 (&a.figure, case, figure)
             }
+            PlotCommand::Crack(a) => {
+                let case = load(&a.figure)?;
+                let crack = case.crack()?;
+                let constants = case.fatigue()?.constants;
+                let (history, options) = marching(&case, cyclic(&case)?, a.cells, &a.figure)?;
+                let figure = FigureConfig::Crack {
+                    history,
+                    options,
+                    constants,
+                    crack,
+                };
+                (&a.figure, case, figure)
+            }
         };
         Ok(Self {
             contact: case.contact,
@@ -292,23 +316,7 @@ fn stress_map(
         .into_iter()
         .next()
         .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
-    let a = state.half_width;
-    let (nx, nz) = MAP_POINTS;
-    let x: Vec<f64> = (0..nx)
-        .map(|i| 1.5 * a * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
-        .collect();
-    let z: Vec<f64> = (0..nz).map(|j| a * j as f64 / (nz - 1) as f64).collect();
-    let (px, pz): (Vec<f64>, Vec<f64>) = z
-        .iter()
-        .flat_map(|&z| x.iter().map(move |&x| (x, z)))
-        .unzip();
-    let field = stress::field(
-        &state.traction,
-        state.load.bulk(),
-        &contact.material(),
-        &px,
-        &pz,
-    )?;
+    let (x, z, field) = map_field(contact, &state)?;
     let (values, name) = match component {
         Component::Sxx => (field.sxx, "σxx"),
         Component::Szz => (field.szz, "σzz"),
@@ -321,7 +329,98 @@ fn stress_map(
         values: &values,
     };
     Ok(halfplane_plot::stress_map_figure(
-        &map, name, step, a, units,
+        &map,
+        name,
+        step,
+        [state.ends.left, state.ends.right],
+        units,
+    )?)
+}
+
+/// The stresses of a marched increment on the map's grid over `+/-1.5 a` about the contact's
+/// centre and down to `a` (`a` the half-width then): the grid's x and z and the field row after
+/// row (z outer).
+fn map_field(
+    contact: &Contact,
+    state: &stress::MarchedTraction,
+) -> Result<(Vec<f64>, Vec<f64>, stress::StressField)> {
+    // Centred on the contact, which a moment moves off x = 0.
+    let a = state.half_width;
+    let centre = 0.5 * (state.ends.left + state.ends.right);
+    grid_field(contact, state, centre, 1.5 * a, a)
+}
+
+/// The stresses of a marched increment on the map's grid: `x` from `centre - half` to
+/// `centre + half`, `z` from 0 to `depth`; the grid's x and z and the field row after row.
+fn grid_field(
+    contact: &Contact,
+    state: &stress::MarchedTraction,
+    centre: f64,
+    half: f64,
+    depth: f64,
+) -> Result<(Vec<f64>, Vec<f64>, stress::StressField)> {
+    let (nx, nz) = MAP_POINTS;
+    let x: Vec<f64> = (0..nx)
+        .map(|i| centre + half * (-1.0 + 2.0 * i as f64 / (nx - 1) as f64))
+        .collect();
+    let z: Vec<f64> = (0..nz)
+        .map(|j| depth * j as f64 / (nz - 1) as f64)
+        .collect();
+    let (px, pz): (Vec<f64>, Vec<f64>) = z
+        .iter()
+        .flat_map(|&z| x.iter().map(move |&x| (x, z)))
+        .unzip();
+    let field = stress::field(
+        &state.traction,
+        state.load.bulk(),
+        &contact.material(),
+        &px,
+        &pz,
+    )?;
+    Ok((x, z, field))
+}
+
+/// The crack figure: the analysis of `halfplane crack`, and the `sxx` map at the increment where
+/// the longest crack opens most (the first of the cycle when it never opens).
+fn crack_figure(
+    contact: &Contact,
+    history: &History,
+    options: &MarchOptions,
+    constants: &halfplane::fatigue::FatigueConstants,
+    crack: &halfplane::crack::CrackOptions,
+    units: &Units,
+) -> Result<halfplane_plot::Figure> {
+    let result = halfplane::crack::analyse(contact, history, options, constants, crack)?;
+    let longest = result
+        .rows
+        .last()
+        .ok_or_else(|| anyhow!("the crack analysis gave no rows"))?;
+    let peak = longest
+        .increments
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.k1.total_cmp(&b.1.k1))
+        .map_or(0, |(i, _)| i);
+    let step = result.steps[peak];
+    let state = stress::marched(contact, history, options, &[step])?
+        .into_iter()
+        .next()
+        .ok_or_else(|| anyhow!("the march did not reach step {step}"))?;
+    // The map around the crack: 1.5 crack lengths to either side of the mouth and below it (at
+    // least a fifth of the contact half-width), so that the stress the crack crosses shows.
+    let span = 1.5 * longest.length.max(0.2 * state.half_width);
+    let (x, z, field) = grid_field(contact, &state, result.mouth, span, span)?;
+    let map = GridMap {
+        x: &x,
+        z: &z,
+        values: &field.sxx,
+    };
+    Ok(halfplane_plot::crack_figure(
+        &result,
+        &map,
+        step,
+        [state.ends.left, state.ends.right],
+        units,
     )?)
 }
 
@@ -438,5 +537,11 @@ fn figure(config: &PlotConfig) -> Result<halfplane_plot::Figure> {
                 None => halfplane_plot::surface_profiles_figure(&result, units),
             }
         }
+        FigureConfig::Crack {
+            history,
+            options,
+            constants,
+            crack,
+        } => crack_figure(contact, history, options, constants, crack, units)?,
     })
 }

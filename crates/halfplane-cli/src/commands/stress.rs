@@ -243,6 +243,9 @@ pub fn run(config: &StressConfig) -> Result<()> {
         shear: state.load.shear(),
         bulk,
         half_width: state.half_width,
+        moment: state.load.moment(),
+        contact_left: state.ends.left,
+        contact_right: state.ends.right,
         points: Vec::new(),
         units: config.units.clone(),
     };

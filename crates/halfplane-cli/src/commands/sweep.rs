@@ -126,7 +126,7 @@ impl SweepConfig {
             size::check(&spec, dir, run)?;
         }
         let mut batch = Batch::new(threads(args.threads)?)?;
-        if spec.analysis == Analysis::March {
+        if spec.analysis != Analysis::Steady {
             batch = batch.with_chunk_rows(MARCH_CHUNK_ROWS)?;
         }
         Ok(Self {

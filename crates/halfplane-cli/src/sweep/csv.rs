@@ -147,6 +147,16 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
             None => s.push_str(",,,,,,,,"),
         }
     }
+    if layout.analysis == Analysis::Crack {
+        s.push(',');
+        if let Some(c) = &outcome.crack {
+            s.push_str(c.verdict.name());
+            s.push(',');
+            num(&mut s, c.arrest_length.unwrap_or(f64::NAN));
+        } else {
+            s.push(',');
+        }
+    }
     s.push('\n');
     s
 }

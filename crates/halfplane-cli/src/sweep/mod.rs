@@ -5,7 +5,8 @@
 //! are solved on every core by the library's batch engine and handed over in order, chunk by
 //! chunk, to a writer ([`csv`], or Parquet with the `parquet` feature, on by default), so output of any length
 //! is streamed. Column names are a public interface: the varied paths as written, then
-//! [`STEADY_COLUMNS`], then (march sweeps) [`MARCH_COLUMNS`].
+//! [`STEADY_COLUMNS`], then (march sweeps) [`MARCH_COLUMNS`] or (crack sweeps)
+//! [`CRACK_COLUMNS`].
 
 pub mod csv;
 #[cfg(feature = "parquet")]
@@ -35,12 +36,18 @@ impl Layout {
     pub fn columns(&self) -> Vec<String> {
         let mut out: Vec<String> = self.varied.iter().map(|v| v.path.clone()).collect();
         out.extend(STEADY_COLUMNS.iter().map(|c| c.to_string()));
-        if self.analysis == Analysis::March {
-            out.extend(MARCH_COLUMNS.iter().map(|c| c.to_string()));
+        match self.analysis {
+            Analysis::March => out.extend(MARCH_COLUMNS.iter().map(|c| c.to_string())),
+            Analysis::Crack => out.extend(CRACK_COLUMNS.iter().map(|c| c.to_string())),
+            Analysis::Steady => {}
         }
         out
     }
 }
+
+/// The columns a crack sweep adds: the verdict (`arrests`, `propagates`, `no-growth`) and the
+/// arrest length (empty unless the crack arrests), as `halfplane crack --json` names them.
+pub const CRACK_COLUMNS: [&str; 2] = ["crack.verdict", "crack.arrest_length"];
 
 /// Where a sweep's rows go: each row is encoded on a worker thread ([`RowSink::encode`]), and
 /// the encoded rows of a chunk are written in row order ([`RowSink::write`]).

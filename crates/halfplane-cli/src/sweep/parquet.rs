@@ -1,5 +1,5 @@
 //! Parquet output of a sweep (the `parquet` feature): the same columns as the CSV, typed. The
-//! varied paths and the numbers are `Float64`, `regime` and `error` are `Utf8`,
+//! varied paths and the numbers are `Float64`, `regime`, `error` and `crack.verdict` are `Utf8`,
 //! `shakedown_cycle` and `cycles_run` are `UInt64`, `steady_converged` is `Boolean`; a value the row does not have is null (never NaN), and `error`
 //! is null when the row succeeded. Each chunk of rows is written as it arrives; row groups hold
 //! at most [`ROW_GROUP_ROWS`] rows, so memory stays bounded whatever the sweep's length.
@@ -46,7 +46,7 @@ pub fn schema(layout: &Layout) -> Schema {
         .collect();
     for name in &layout.columns()[layout.varied.len()..] {
         let kind = match name.as_str() {
-            "regime" | "error" => DataType::Utf8,
+            "regime" | "error" | "crack.verdict" => DataType::Utf8,
             "shakedown_cycle" | "cycles_run" => DataType::UInt64,
             "steady_converged" => DataType::Boolean,
             _ => DataType::Float64,
@@ -140,6 +140,17 @@ impl ParquetSink {
             columns.push(Arc::new(cycles_run.finish()));
             columns.push(march(&|m| m.steady_change()));
             columns.push(Arc::new(converged.finish()));
+        }
+        if self.layout.analysis == Analysis::Crack {
+            let mut verdict = StringBuilder::new();
+            let mut arrest = Float64Builder::with_capacity(n);
+            for r in rows {
+                let c = r.outcome.crack.as_ref();
+                verdict.append_option(c.map(|c| c.verdict.name()));
+                arrest.append_option(c.and_then(|c| c.arrest_length));
+            }
+            columns.push(Arc::new(verdict.finish()));
+            columns.push(Arc::new(arrest.finish()));
         }
         RecordBatch::try_new(self.schema.clone(), columns)
             .map_err(|e| anyhow!("cannot assemble the rows for {}: {e}", self.part.display()))

@@ -29,8 +29,10 @@ fn rows_field(spec: &Spec, rows: u64, shard: bool) -> String {
 /// The estimated output bytes of `rows` rows.
 pub fn output_bytes(spec: &Spec, rows: u64, format: OutputFormat) -> f64 {
     let mut numbers = spec.varied.len() + 10;
-    if spec.analysis == Analysis::March {
-        numbers += 5;
+    match spec.analysis {
+        Analysis::March => numbers += 5,
+        Analysis::Crack => numbers += 2,
+        Analysis::Steady => {}
     }
     let per = match format {
         OutputFormat::Csv => CSV_NUMBER_BYTES,
@@ -66,8 +68,15 @@ fn row_seconds(spec: &Spec, dir: &Path, direct: bool) -> f64 {
         });
     let march = largest
         .and_then(|c| {
-            let increments = c.history().ok()?.loads().len();
-            Some(limits::march_seconds(c.solver.cells(), increments))
+            let history = c.history().ok()?;
+            let increments = history.loads().len();
+            let mut seconds = limits::march_seconds(c.solver.cells(), increments);
+            if spec.analysis == Analysis::Crack {
+                let lengths = c.crack().ok()?.lengths().len();
+                let per_cycle = history.cycles()?.steps_per_cycle();
+                seconds += limits::crack_seconds(lengths, per_cycle);
+            }
+            Some(seconds)
         })
         .unwrap_or(0.0);
     limits::REREAD_ROW_SECONDS + march
@@ -109,7 +118,7 @@ pub fn check(spec: &Spec, dir: &Path, run: Run) -> Result<(), TooLarge> {
     let per_row = row_seconds(spec, dir, direct);
     let basis = match spec.analysis {
         Analysis::Steady => format!("{} rows at {} s each", limits::sci(rows as f64), per_row),
-        Analysis::March => format!(
+        Analysis::March | Analysis::Crack => format!(
             "{} rows at {} each, the march of the largest case at {} s per cell² x increment",
             limits::sci(rows as f64),
             limits::duration(per_row),

@@ -14,6 +14,9 @@ pub enum Analysis {
     /// Time marching through the case's `[history]`, plus the steady state when it has a
     /// `[cycle]`.
     March,
+    /// The crack of the case's `[crack]` over the steady cycle of its `[history]` (its verdict
+    /// and arrest length: a crack-arrest map), plus the steady state when it has a `[cycle]`.
+    Crack,
 }
 
 /// A varied field: its dotted path as written, the path's keys, and whether the case writes it
@@ -80,8 +83,9 @@ pub fn parse(text: &str) -> Result<Spec> {
         None => Analysis::Steady,
         Some(Value::String(s)) if s == "steady" => Analysis::Steady,
         Some(Value::String(s)) if s == "march" => Analysis::March,
+        Some(Value::String(s)) if s == "crack" => Analysis::Crack,
         Some(other) => {
-            bail!("invalid sweep.analysis = {other}: must be \"steady\" (the default) or \"march\"")
+            bail!("invalid sweep.analysis = {other}: must be \"steady\" (the default), \"march\" or \"crack\"")
         }
     };
     let vary = match sweep.get("vary") {

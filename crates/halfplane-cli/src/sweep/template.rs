@@ -17,6 +17,7 @@ use super::spec::{Analysis, Spec, Varied};
 use crate::case::{self, Case};
 use anyhow::{bail, Result};
 use halfplane::batch::{self, MarchSummary, SteadySummary};
+use halfplane::crack::Verdict;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile, Shape, SteadyOptions};
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -29,10 +30,12 @@ enum Slot {
     PoissonRatio,
     Friction,
     Radius,
+    LeftRadius,
+    RightRadius,
     FlatHalfWidth,
     Coefficient,
     Exponent,
-    /// `cycle.point{1,2}.{normal, shear, bulk}`: point 0 or 1, part 0, 1 or 2.
+    /// `cycle.point{1,2}.{normal, shear, bulk, moment}`: point 0 or 1, part 0 to 3.
     Load(usize, usize),
 }
 
@@ -43,12 +46,16 @@ fn slot(keys: &[String]) -> Option<Slot> {
         ["material", "poisson_ratio"] => Slot::PoissonRatio,
         ["friction", "coefficient"] => Slot::Friction,
         ["profile", "radius"] => Slot::Radius,
+        ["profile", "left_radius"] => Slot::LeftRadius,
+        ["profile", "right_radius"] => Slot::RightRadius,
         ["profile", "flat_half_width"] => Slot::FlatHalfWidth,
         ["profile", "coefficient"] => Slot::Coefficient,
         ["profile", "exponent"] => Slot::Exponent,
         ["cycle", point, part] => {
             let p = ["point1", "point2"].iter().position(|n| n == point)?;
-            let q = ["normal", "shear", "bulk"].iter().position(|n| n == part)?;
+            let q = ["normal", "shear", "bulk", "moment"]
+                .iter()
+                .position(|n| n == part)?;
             Slot::Load(p, q)
         }
         _ => return None,
@@ -63,9 +70,20 @@ pub struct Outcome {
     pub steady: Option<SteadySummary>,
     /// The march (march sweeps only; absent when it failed).
     pub march: Option<MarchSummary>,
+    /// The crack's verdict (crack sweeps only; absent when it failed).
+    pub crack: Option<CrackSummary>,
     /// Empty when the row succeeded; otherwise the error (in a march sweep, prefixed by the
     /// analysis that failed, `steady:` or `march:`, joined by `; `).
     pub error: String,
+}
+
+/// A crack analysis in the two values a crack-arrest map needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrackSummary {
+    /// `arrests`, `propagates` or `no-growth`.
+    pub verdict: Verdict,
+    /// The arrest length when it arrests.
+    pub arrest_length: Option<f64>,
 }
 
 /// The resolved case of a sweep and how each row's case is made from it.
@@ -94,11 +112,16 @@ impl Template {
             Analysis::March => {
                 base.march_history()?;
             }
+            Analysis::Crack => {
+                base.crack()?;
+                base.fatigue()?;
+                base.history()?;
+            }
             _ => {}
         }
         let slots: Option<Vec<Slot>> = match spec.analysis {
             Analysis::Steady => spec.varied.iter().map(|v| slot(&v.keys)).collect(),
-            Analysis::March => None,
+            Analysis::March | Analysis::Crack => None,
         };
         let direct = slots.zip(base.cycle);
         Ok(Self {
@@ -136,6 +159,7 @@ impl Template {
                     Ok(summary) => Outcome {
                         steady: Some(summary),
                         march: None,
+                        crack: None,
                         error: String::new(),
                     },
                     Err(e) => failed(e.to_string()),
@@ -163,8 +187,10 @@ impl Template {
         );
         let mut f = base.friction().value();
         let mut shape = base.profile().shape().clone();
+        // A flat-rounded pad's two radii (equal unless written as left_radius/right_radius).
+        let mut radii = base.profile().edge_radii();
         let (p1, p2) = cycle.as_given();
-        let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk()]);
+        let mut loads = [p1, p2].map(|p| [p.normal(), p.shear(), p.bulk(), p.moment()]);
         let (mut material, mut friction, mut profile, mut points) = (false, false, false, false);
         for (slot, &v) in slots.iter().zip(values) {
             match (slot, &mut shape) {
@@ -178,7 +204,16 @@ impl Template {
                         edge_radius: radius,
                         ..
                     },
-                ) => (*radius, profile) = (v, true),
+                ) => {
+                    (*radius, profile) = (v, true);
+                    radii = radii.map(|_| (v, v));
+                }
+                (Slot::LeftRadius, Shape::FlatRounded { .. }) => {
+                    (radii, profile) = (radii.map(|(_, r)| (v, r)), true)
+                }
+                (Slot::RightRadius, Shape::FlatRounded { .. }) => {
+                    (radii, profile) = (radii.map(|(l, _)| (l, v)), true)
+                }
                 (
                     Slot::FlatHalfWidth,
                     Shape::FlatRounded {
@@ -197,6 +232,10 @@ impl Template {
                 _ => {}
             }
         }
+        let two_radii = !base.profile().is_symmetric()
+            || slots
+                .iter()
+                .any(|s| matches!(s, Slot::LeftRadius | Slot::RightRadius));
         let contact = if material || friction || profile {
             let material = match material {
                 true => Material::new(e, nu)?,
@@ -211,10 +250,16 @@ impl Template {
                 (
                     true,
                     Shape::FlatRounded {
-                        flat_half_width,
-                        edge_radius,
+                        flat_half_width, ..
                     },
-                ) => Profile::flat_rounded(flat_half_width, edge_radius)?,
+                ) => match radii {
+                    // As the case reader: two radii when the case writes two (so varies them).
+                    Some((left, right)) if two_radii => {
+                        Profile::flat_rounded_asymmetric(flat_half_width, left, right)?
+                    }
+                    Some((radius, _)) => Profile::flat_rounded(flat_half_width, radius)?,
+                    None => base.profile().clone(),
+                },
                 (
                     true,
                     Shape::PowerLaw {
@@ -232,8 +277,10 @@ impl Template {
             true => {
                 let [a, b] = loads;
                 Cycle::new(
-                    LoadPoint::new("cycle.point1", a[0], a[1], a[2])?,
-                    LoadPoint::new("cycle.point2", b[0], b[1], b[2])?,
+                    LoadPoint::new("cycle.point1", a[0], a[1], a[2])?
+                        .with_moment("cycle.point1", a[3])?,
+                    LoadPoint::new("cycle.point2", b[0], b[1], b[2])?
+                        .with_moment("cycle.point2", b[3])?,
                 )
             }
             false => cycle,
@@ -261,6 +308,7 @@ impl Template {
                 Some(Ok(summary)) => Outcome {
                     steady: Some(summary),
                     march: None,
+                    crack: None,
                     error: String::new(),
                 },
                 Some(Err(e)) => failed(e.to_string()),
@@ -269,14 +317,7 @@ impl Template {
             },
             Analysis::March => {
                 let mut errors = Vec::new();
-                let steady = match steady {
-                    Some(Ok(s)) => Some(s),
-                    Some(Err(e)) => {
-                        errors.push(format!("steady: {e}"));
-                        None
-                    }
-                    None => None,
-                };
+                let steady = kept(steady, &mut errors);
                 let march = case.march_history().and_then(|(history, until)| {
                     Ok(batch::march_summary(
                         &case.contact,
@@ -296,6 +337,25 @@ impl Template {
                 Outcome {
                     steady,
                     march,
+                    crack: None,
+                    error: errors.join("; "),
+                }
+            }
+            Analysis::Crack => {
+                let mut errors = Vec::new();
+                let steady = kept(steady, &mut errors);
+                let crack = crack_summary(case);
+                let crack = match crack {
+                    Ok(c) => Some(c),
+                    Err(e) => {
+                        errors.push(format!("crack: {e:#}"));
+                        None
+                    }
+                };
+                Outcome {
+                    steady,
+                    march: None,
+                    crack,
                     error: errors.join("; "),
                 }
             }
@@ -303,10 +363,39 @@ impl Template {
     }
 }
 
+/// The steady summary of a march or crack row, its error (if any) added to `errors` as
+/// `steady: ...`.
+fn kept(
+    steady: Option<halfplane::Result<SteadySummary>>,
+    errors: &mut Vec<String>,
+) -> Option<SteadySummary> {
+    match steady? {
+        Ok(s) => Some(s),
+        Err(e) => {
+            errors.push(format!("steady: {e}"));
+            None
+        }
+    }
+}
+
+/// `halfplane crack` on a case read for the row: its verdict and arrest length.
+fn crack_summary(case: &Case) -> Result<CrackSummary> {
+    let options = case.crack()?;
+    let constants = case.fatigue()?.constants;
+    let history = case.history()?;
+    let result =
+        halfplane::crack::analyse(&case.contact, &history, &case.solver, &constants, &options)?;
+    Ok(CrackSummary {
+        verdict: result.verdict,
+        arrest_length: result.arrest_length,
+    })
+}
+
 fn failed(error: String) -> Outcome {
     Outcome {
         steady: None,
         march: None,
+        crack: None,
         error,
     }
 }
@@ -353,7 +442,7 @@ coefficient = 0.6
 {profile}
 [cycle]
 point1 = {{ normal = 1000.0, shear = -250.0, bulk = -20.0 }}
-point2 = {{ normal = 1400.0, shear = 250.0, bulk = 20.0 }}
+point2 = {{ normal = 1400.0, shear = 250.0, bulk = 20.0, moment = 0.0 }}
 [sweep]
 mode = "random"
 samples = 300
@@ -385,6 +474,10 @@ seed = 11
             (
                 "kind = \"power-law\"\ncoefficient = 0.01\nexponent = 2.5",
                 "\"profile.coefficient\" = { from = 0.001, to = 0.1, scale = \"log\" }\n\"profile.exponent\" = { from = 0.5, to = 4.0 }",
+            ),
+            (
+                "kind = \"flat-rounded\"\nflat_half_width = 0.3\nleft_radius = 40.0\nright_radius = 60.0",
+                "\"profile.left_radius\" = { from = -5.0, to = 80.0 }\n\"profile.right_radius\" = { from = 20.0, to = 90.0 }\n\"cycle.point2.moment\" = { from = -400.0, to = 400.0 }",
             ),
         ];
         for (profile, vary) in cases {

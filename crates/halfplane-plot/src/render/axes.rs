@@ -118,7 +118,70 @@ fn tick_formatter(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
 /// Number of tick labels asked for on each axis.
 const TICKS: usize = 11;
 
-pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<Axis, Axis>>;
+
+/// An axis: linear in the values drawn, with plotters' ticks, or (a log panel, whose values are
+/// base-10 logarithms) with ticks at the logarithms of 1, 2 and 5 times the powers of ten.
+#[derive(Clone)]
+pub(super) struct Axis {
+    linear: RangedCoordf64,
+    log: bool,
+}
+
+impl Ranged for Axis {
+    type FormatOption = plotters::coord::ranged1d::DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.linear.map(value, limit)
+    }
+
+    fn key_points<Hint: plotters::coord::ranged1d::KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if !self.log {
+            return self.linear.key_points(hint);
+        }
+        if hint.weight().allow_light_points() {
+            return Vec::new(); // no light grid between the labelled ticks
+        }
+        let range = self.linear.range();
+        log_ticks(range.start, range.end)
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.linear.range()
+    }
+}
+
+/// The base-10 logarithms within `[lo, hi]` of 1, 2 and 5 times the powers of ten (only the
+/// powers when the range spans more than four decades, every digit when it spans less than one).
+fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let span = hi - lo;
+    let mantissas: &[f64] = if span > 4.0 {
+        &[1.0]
+    } else if span < 1.0 {
+        &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+    } else {
+        &[1.0, 2.0, 5.0]
+    };
+    let mut out = Vec::new();
+    for decade in (lo.floor() as i32)..=(hi.ceil() as i32) {
+        for m in mantissas {
+            let t = m.log10() + f64::from(decade);
+            if t >= lo - 1e-12 && t <= hi + 1e-12 {
+                out.push(t);
+            }
+        }
+    }
+    out
+}
+
+/// The label of a log panel's tick `t` (a base-10 logarithm): the value `10^t` written plainly,
+/// to the digits the tick has (`0.002`, `50`, `200`).
+fn log_label(t: &f64) -> String {
+    crate::number((10f64.powf(*t) * 1e9).round() / 1e9 * (1.0 + 0.0))
+        .trim_end_matches(".0")
+        .to_string()
+}
 
 /// The chart frame: caption, margin and the axes' label areas (the same in measuring, planning
 /// and drawing).
@@ -162,10 +225,16 @@ where
         range = equal_aspect(range, plot_pixels(area.dim_in_pixel(), panel)?);
     }
     let ((x0, x1), (y0, y1)) = range;
+    let axis = |lo: f64, hi: f64| Axis {
+        linear: RangedCoordf64::from(lo..hi),
+        log: panel.log_axes,
+    };
     let mut chart = frame(area, &panel.title)
-        .build_cartesian_2d(x0..x1, y0..y1)
+        .build_cartesian_2d(axis(x0, x1), axis(y0, y1))
         .map_err(draw_error)?;
-    let (fx, fy) = (tick_formatter(x0, x1), tick_formatter(y0, y1));
+    let (lx, ly) = (tick_formatter(x0, x1), tick_formatter(y0, y1));
+    let fx = |v: &f64| if panel.log_axes { log_label(v) } else { lx(v) };
+    let fy = |v: &f64| if panel.log_axes { log_label(v) } else { ly(v) };
     chart
         .configure_mesh()
         .x_labels(TICKS)
@@ -198,6 +267,21 @@ mod tests {
         let ((x0, x1), (y0, y1)) = equal_aspect(((0.0, 1.0), (0.0, 1.0)), (600, 300));
         assert!((x0 + 0.5).abs() < 1e-12 && (x1 - 1.5).abs() < 1e-12);
         assert_eq!((y0, y1), (0.0, 1.0));
+    }
+
+    #[test]
+    fn log_ticks_at_one_two_five_and_plain_labels() {
+        // 0.0015 to 0.35: 0.002, 0.005, 0.01, ..., 0.2 (the logarithms), labelled plainly.
+        let t = log_ticks(0.0015f64.log10(), 0.35f64.log10());
+        let labels: Vec<String> = t.iter().map(log_label).collect();
+        assert_eq!(
+            labels,
+            ["0.002", "0.005", "0.01", "0.02", "0.05", "0.1", "0.2"]
+        );
+        // Less than a decade: every digit.
+        let t = log_ticks(45f64.log10(), 310f64.log10());
+        let labels: Vec<String> = t.iter().map(log_label).collect();
+        assert_eq!(labels, ["50", "60", "70", "80", "90", "100", "200", "300"]);
     }
 
     #[test]

@@ -105,6 +105,10 @@ pub struct Panel {
     pub color_bar: Option<ColorBar>,
     /// Whether a unit of x and of y are the same length on the page (a map of a cross-section).
     pub equal_aspect: bool,
+    /// Both axes logarithmic: the series' points are given as they are and drawn at their
+    /// base-10 logarithms (points not above zero are left out); ticks at 1, 2 and 5 times the
+    /// powers of ten.
+    pub log_axes: bool,
 }
 
 impl Panel {
@@ -124,6 +128,7 @@ impl Panel {
             series,
             color_bar: None,
             equal_aspect: false,
+            log_axes: false,
         }
     }
 }

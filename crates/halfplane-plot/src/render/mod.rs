@@ -74,6 +74,8 @@ pub fn write(figure: &Figure, path: &Path) -> Result<(), PlotError> {
 /// The figure as an SVG document, and its size in pixels.
 pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
     register_font();
+    let logged = logarithms(figure);
+    let figure = logged.as_ref().unwrap_or(figure);
     let panel_width = figure
         .panels
         .iter()
@@ -115,4 +117,23 @@ pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
         &format!("font-family=\"{SVG_FAMILY}\""),
     );
     Ok((svg, size))
+}
+
+/// The figure with the points of its log panels replaced by their base-10 logarithms (points
+/// not above zero become NaN, which the bounds and the drawing leave out); `None` without log
+/// panels.
+fn logarithms(figure: &Figure) -> Option<Figure> {
+    if !figure.panels.iter().any(|p| p.log_axes) {
+        return None;
+    }
+    let log = |v: f64| if v > 0.0 { v.log10() } else { f64::NAN };
+    let mut out = figure.clone();
+    for panel in out.panels.iter_mut().filter(|p| p.log_axes) {
+        for s in &mut panel.series {
+            for p in s.pieces.iter_mut().flatten() {
+                *p = (log(p.0), log(p.1));
+            }
+        }
+    }
+    Some(out)
 }

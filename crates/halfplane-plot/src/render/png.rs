@@ -41,6 +41,7 @@ mod tests {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
+                log_axes: false,
                 title: "panel".into(),
                 x_label: "x".into(),
                 y_label: "y".into(),

@@ -9,8 +9,9 @@ use crate::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 
 /// The input columns of a steady batch, in their documented order (a public interface). The
 /// profile parameters a row's kind does not use (see [`ProfileKind::uses`]) may be absent or
-/// NaN.
-pub const STEADY_INPUT_COLUMNS: [&str; 14] = [
+/// NaN; the moments `moment1`, `moment2` (the last two) default to 0 where a front end's table
+/// has no such column.
+pub const STEADY_INPUT_COLUMNS: [&str; 16] = [
     "youngs_modulus",
     "poisson_ratio",
     "friction",
@@ -25,6 +26,8 @@ pub const STEADY_INPUT_COLUMNS: [&str; 14] = [
     "normal2",
     "shear2",
     "bulk2",
+    "moment1",
+    "moment2",
 ];
 
 /// The profile-parameter columns, in the order of [`SteadyRow::shape`].
@@ -101,10 +104,13 @@ pub struct SteadyRow {
     pub point1: [f64; 3],
     /// P, Q, σ at the second point as given (`normal2`, `shear2`, `bulk2`).
     pub point2: [f64; 3],
+    /// M, the pressure's moment about x = 0, at the first and second points as given
+    /// (`moment1`, `moment2`; 0 without a moment).
+    pub moment: [f64; 2],
 }
 
 /// The library's field names for the values of a row, and the columns that hold them.
-const COLUMN_OF_FIELD: [(&str, &str); 13] = [
+const COLUMN_OF_FIELD: [(&str, &str); 15] = [
     ("material.youngs_modulus", "youngs_modulus"),
     ("material.poisson_ratio", "poisson_ratio"),
     ("friction.coefficient", "friction"),
@@ -118,6 +124,8 @@ const COLUMN_OF_FIELD: [(&str, &str); 13] = [
     ("point2.normal", "normal2"),
     ("point2.shear", "shear2"),
     ("point2.bulk", "bulk2"),
+    ("point1.moment", "moment1"),
+    ("point2.moment", "moment2"),
 ];
 
 /// The error with its field renamed to the column that holds the value.
@@ -179,10 +187,12 @@ impl SteadyRow {
     /// [`Error::InvalidInput`] naming the column of an invalid load.
     #[inline]
     pub fn cycle(&self) -> Result<Cycle> {
-        let point = |name: &str, [p, q, s]: [f64; 3]| LoadPoint::new(name, p, q, s);
+        let point = |name: &str, [p, q, s]: [f64; 3], m: f64| {
+            LoadPoint::new(name, p, q, s)?.with_moment(name, m)
+        };
         Ok(Cycle::new(
-            point("point1", self.point1).map_err(in_column)?,
-            point("point2", self.point2).map_err(in_column)?,
+            point("point1", self.point1, self.moment[0]).map_err(in_column)?,
+            point("point2", self.point2, self.moment[1]).map_err(in_column)?,
         ))
     }
 
@@ -213,6 +223,7 @@ mod tests {
             shape: [reference::RADIUS, nan, nan, nan],
             point1: [1000.0, -250.0, -20.0],
             point2: [1400.0, 250.0, 20.0],
+            moment: [0.0, 0.0],
         }
     }
 
@@ -228,7 +239,7 @@ mod tests {
     #[test]
     fn errors_name_the_column() {
         type Spoil = fn(&mut SteadyRow);
-        let cases: [(&str, Spoil); 7] = [
+        let cases: [(&str, Spoil); 8] = [
             ("youngs_modulus", |r| r.youngs_modulus = -1.0),
             ("poisson_ratio", |r| r.poisson_ratio = 0.5),
             ("friction", |r| r.friction = f64::NAN),
@@ -236,6 +247,7 @@ mod tests {
             ("normal1", |r| r.point1[0] = 0.0),
             ("shear2", |r| r.point2[1] = f64::INFINITY),
             ("bulk2", |r| r.point2[2] = 1e31),
+            ("moment1", |r| r.moment[0] = f64::NAN),
         ];
         for (column, spoil) in cases {
             let mut row = reference_row();

@@ -78,6 +78,17 @@ impl CrackSolver {
             }
         }
         let scale = if scale > 0.0 { scale } else { 1.0 };
+        // The open crack's displacements and tip factors of every increment (no contact).
+        let free: Vec<Free> = loads
+            .iter()
+            .map(|(normal, shear)| {
+                let t = self.free_tractions(normal, shear);
+                Free {
+                    displacement: self.displacements(&t),
+                    factors: self.tip(&t),
+                }
+            })
+            .collect();
         let n = self.n;
         let mut states = vec![FaceState::Open; n];
         let mut slip = vec![0.0; n];
@@ -85,16 +96,16 @@ impl CrackSolver {
         let mut out = Vec::with_capacity(loads.len());
         for _ in 0..MAX_PASSES {
             out.clear();
-            for (m, (normal, shear)) in loads.iter().enumerate() {
-                let (psi, new_states) = self
-                    .increment(normal, shear, friction, &states, &slip, scale)
+            for (m, free) in free.iter().enumerate() {
+                let solution = self
+                    .increment(free, friction, &states, &slip, scale)
                     .ok_or(Error::ActiveSet {
                         step: m + 1,
                         iterations: MAX_ITERATIONS,
                     })?;
-                states = new_states;
-                slip = self.displacement(&psi, 0);
-                out.push(self.report(&psi, &states, normal, shear));
+                states.clone_from(&solution.states);
+                slip.copy_from_slice(&solution.displacement[..n]);
+                out.push(self.report(free, &solution));
             }
             let tol = 1e-9 * scale * self.crack.length;
             if let Some((s, d)) = &previous_end {
@@ -111,36 +122,25 @@ impl CrackSolver {
         Ok(out)
     }
 
-    /// `A delta_j` at the collocation points from `psi` (`j = 0` slip, `1` opening).
-    fn displacement(&self, psi: &[f64], j: usize) -> Vec<f64> {
-        let n = self.n;
-        self.tail
-            .iter()
-            .map(|row| (0..n).map(|i| row[i] * psi[j * n + i]).sum())
-            .collect()
-    }
-
-    /// The total `(s22, s12)` at the collocation points.
-    fn tractions(&self, psi: &[f64], normal: &[f64], shear: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    /// `W t`: `A delta_1` (slip) at the collocation points, then `A delta_2` (opening).
+    fn displacements(&self, t: &[f64]) -> Vec<f64> {
         let n2 = 2 * self.n;
-        let row = |r: usize| -> f64 { (0..n2).map(|c| self.influence[r * n2 + c] * psi[c]).sum() };
-        let s22 = (0..self.n).map(|k| normal[k] + row(k)).collect();
-        let s12 = (0..self.n).map(|k| -shear[k] + row(self.n + k)).collect();
-        (s22, s12)
+        self.compliance
+            .chunks_exact(n2)
+            .map(|row| row.iter().zip(t).map(|(a, b)| a * b).sum())
+            .collect()
     }
 
     /// One increment's active set, from the states and slips (`A delta_1`) of the previous one.
     fn increment(
         &self,
-        normal: &[f64],
-        shear: &[f64],
+        free: &Free,
         f: f64,
         before: &[FaceState],
         slip_before: &[f64],
         scale: f64,
-    ) -> Option<(Vec<f64>, Vec<FaceState>)> {
+    ) -> Option<Contact> {
         let n = self.n;
-        let n2 = 2 * n;
         let mut states = before.to_vec();
         if f == 0.0 {
             for s in &mut states {
@@ -157,17 +157,12 @@ impl CrackSolver {
         let mut seen: Vec<Vec<FaceState>> = vec![states.clone()];
         let mut one_at_a_time = false;
         let mut repeats = 0;
-        let mut best: Option<(f64, Vec<f64>, Vec<FaceState>)> = None;
+        let mut best: Option<(f64, Contact)> = None;
         for _ in 0..MAX_ITERATIONS {
-            let (a, mut psi) = self.system(normal, shear, f, &states, held);
-            if states.iter().all(|s| !s.closed()) {
-                self.open.solve(&mut psi); // the open crack's factorisation, made once
-            } else {
-                Lu::factor(a, n2)?.solve(&mut psi);
-            }
-            let gap = self.displacement(&psi, 1);
-            let now = self.displacement(&psi, 0);
-            let (s22, s12) = self.tractions(&psi, normal, shear);
+            let c = self.contact_tractions(free, f, &states, held)?;
+            let d = &c.displacement;
+            let (now, gap) = d.split_at(n);
+            let (s22, s12) = c.traction.split_at(n);
             // Proposed changes with the size of their violation (stress units); changes of
             // contact come before changes of stick and slip, and once a set of states repeats
             // only the largest violation is corrected per pass, which ends the cycling.
@@ -202,11 +197,11 @@ impl CrackSolver {
                 }
             }
             if proposals.is_empty() {
-                return Some((psi, states));
+                return Some(c);
             }
             let violation = proposals.iter().map(|p| p.2).fold(0.0, f64::max);
             if best.as_ref().is_none_or(|b| violation < b.0) {
-                best = Some((violation, psi.clone(), states.clone()));
+                best = Some((violation, c));
             }
             if !one_at_a_time && proposals.iter().any(|p| p.3) {
                 proposals.retain(|p| p.3);
@@ -230,8 +225,8 @@ impl CrackSolver {
                     // A point toggling between two states that each violate a condition
                     // slightly (the discrete contact has no exact solution there): keep the
                     // state of the smallest violation if it is small.
-                    let (v, psi, states) = best?;
-                    return (v <= TOGGLE_TOLERANCE * scale).then_some((psi, states));
+                    let (v, c) = best?;
+                    return (v <= TOGGLE_TOLERANCE * scale).then_some(c);
                 }
             } else {
                 seen.push(states.clone());
@@ -240,82 +235,118 @@ impl CrackSolver {
         None
     }
 
-    /// The system of one active set: open points keep their traction equations; a closed
-    /// point's normal row sets its opening to zero, its shear row holds its slip (stick) or
-    /// makes the shear traction `f |s22|` with the slip's sign (slip).
-    fn system(
+    /// The face tractions of one active set and the displacements they leave. Unknowns: at a
+    /// closed point its normal traction `s22`, and its shear traction `s12` if it sticks (a
+    /// slipping point carries `s12 = -sg f s22`). Equations: a closed point's opening is zero;
+    /// a stuck point's slip keeps `held`. Open points carry nothing. `None` if the reduced
+    /// system is singular.
+    fn contact_tractions(
         &self,
-        normal: &[f64],
-        shear: &[f64],
+        free: &Free,
         f: f64,
         states: &[FaceState],
         held: &[f64],
-    ) -> (Vec<f64>, Vec<f64>) {
+    ) -> Option<Contact> {
         let n = self.n;
         let n2 = 2 * n;
-        let mut a = self.influence.clone();
-        let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
-        rhs.extend_from_slice(shear);
-        for k in 0..n {
-            match states[k] {
+        let w = |r: usize, c: usize| self.compliance[r * n2 + c];
+        // Unknown j: (point k, true for s22 / false for s12 of a stuck point).
+        let mut unknowns: Vec<(usize, bool)> = Vec::new();
+        for (k, s) in states.iter().enumerate() {
+            match s {
                 FaceState::Open => {}
-                closed => {
-                    let (lower, upper) = a.split_at_mut((n + k) * n2);
-                    let normal_row = &mut lower[k * n2..(k + 1) * n2];
-                    let shear_row = &mut upper[..n2];
-                    if let FaceState::Slip(sg) = closed {
-                        let c = f64::from(sg) * f;
-                        for (s, v) in shear_row.iter_mut().zip(normal_row.iter()) {
-                            *s += c * v;
-                        }
-                        rhs[n + k] = shear[k] - c * normal[k];
-                    } else {
-                        shear_row.fill(0.0);
-                        shear_row[..n].copy_from_slice(&self.tail[k]);
-                        rhs[n + k] = held[k];
-                    }
-                    normal_row.fill(0.0);
-                    normal_row[n..].copy_from_slice(&self.tail[k]);
-                    rhs[k] = 0.0;
+                FaceState::Slip(_) => unknowns.push((k, true)),
+                FaceState::Stick => {
+                    unknowns.push((k, true));
+                    unknowns.push((k, false));
                 }
             }
         }
-        (a, rhs)
+        // The displacement row `r` per unknown: a traction `s22` at k carries `s12 = -sg f s22`
+        // with it if k slips.
+        let column = |r: usize, (k, normal): (usize, bool)| -> f64 {
+            if !normal {
+                return w(r, n + k);
+            }
+            match states[k] {
+                FaceState::Slip(sg) => w(r, k) - f64::from(sg) * f * w(r, n + k),
+                _ => w(r, k),
+            }
+        };
+        let size = unknowns.len();
+        let mut traction = vec![0.0; n2];
+        let mut displacement = free.displacement.clone();
+        if size > 0 {
+            let mut matrix = vec![0.0; size * size];
+            let mut rhs = vec![0.0; size];
+            for (i, &(k, normal)) in unknowns.iter().enumerate() {
+                // Opening row for s22 unknowns, slip row for s12 unknowns.
+                let (r, target) = if normal { (n + k, 0.0) } else { (k, held[k]) };
+                for (j, &u) in unknowns.iter().enumerate() {
+                    matrix[i * size + j] = column(r, u);
+                }
+                rhs[i] = target - free.displacement[r];
+            }
+            Lu::factor(matrix, size)?.solve(&mut rhs);
+            for (&(k, normal), &v) in unknowns.iter().zip(&rhs) {
+                if normal {
+                    traction[k] = v;
+                    if let FaceState::Slip(sg) = states[k] {
+                        traction[n + k] = -f64::from(sg) * f * v;
+                    }
+                } else {
+                    traction[n + k] = v;
+                }
+            }
+            for (r, d) in displacement.iter_mut().enumerate() {
+                let row = &self.compliance[r * n2..(r + 1) * n2];
+                *d += (0..n)
+                    .filter(|&k| states[k].closed())
+                    .map(|k| row[k] * traction[k] + row[n + k] * traction[n + k])
+                    .sum::<f64>();
+            }
+        }
+        if !displacement.iter().chain(&traction).all(|v| v.is_finite()) {
+            return None;
+        }
+        Some(Contact {
+            states: states.to_vec(),
+            traction,
+            displacement,
+        })
     }
 
-    fn report(
-        &self,
-        psi: &[f64],
-        states: &[FaceState],
-        normal: &[f64],
-        shear: &[f64],
-    ) -> IncrementSolution {
-        let mut factors = self.tip(psi);
-        if states[0].closed() || factors.k1 < 0.0 {
+    fn report(&self, free: &Free, c: &Contact) -> IncrementSolution {
+        let n = self.n;
+        let mut factors = free.factors;
+        let extra = self.tip(&c.traction);
+        factors.k1 += extra.k1;
+        factors.k2 += extra.k2;
+        if c.states[0].closed() || factors.k1 < 0.0 {
             factors.k1 = 0.0;
         }
-        let (s22, s12) = self.tractions(psi, normal, shear);
-        let on = |v: Vec<f64>| -> Vec<f64> {
-            v.into_iter()
-                .zip(states)
-                .map(|(v, s)| if s.closed() { v } else { 0.0 })
-                .collect()
-        };
         IncrementSolution {
             factors,
-            states: states.to_vec(),
-            opening: self
-                .displacement(psi, 1)
-                .iter()
-                .map(|d| d / self.a)
-                .collect(),
-            slip: self
-                .displacement(psi, 0)
-                .iter()
-                .map(|d| d / self.a)
-                .collect(),
-            normal: on(s22),
-            shear: on(s12.into_iter().map(|v| -v).collect()),
+            states: c.states.clone(),
+            opening: c.displacement[n..].iter().map(|d| d / self.a).collect(),
+            slip: c.displacement[..n].iter().map(|d| d / self.a).collect(),
+            normal: c.traction[..n].to_vec(),
+            shear: c.traction[n..].iter().map(|v| -v).collect(),
         }
     }
+}
+
+/// One increment of the open crack (tractions `t`): its displacements `W t` and tip factors.
+struct Free {
+    displacement: Vec<f64>,
+    factors: TipFactors,
+}
+
+/// One active set solved: the states, the face tractions (`s22` at every collocation point,
+/// then `s12`; zero on open points) and the displacements (`A delta_1`, then `A delta_2`).
+#[derive(Debug, Clone)]
+struct Contact {
+    states: Vec<FaceState>,
+    traction: Vec<f64>,
+    displacement: Vec<f64>,
 }

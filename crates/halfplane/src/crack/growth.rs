@@ -16,7 +16,7 @@
 use super::solve::{CrackSolver, TipFactors};
 use super::Crack;
 use crate::error::{Error, Result};
-use crate::fatigue::FatigueConstants;
+use crate::fatigue::{self, FatigueConstants, Parameter};
 use crate::history::History;
 use crate::march::MarchOptions;
 use crate::normal::Contact;
@@ -29,9 +29,10 @@ pub const MAX_LENGTH_RATIO: f64 = 1.0;
 /// Where the crack's mouth is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Position {
-    /// At `x = -a_max` (the largest half-width of the steady cycle).
+    /// At the leftmost position of the contact's left end over the steady cycle (`x = -a_max`,
+    /// with `a_max` its largest half-width, without a moment on a symmetric profile).
     LeftEdge,
-    /// At `x = a_max`.
+    /// At the rightmost position of its right end (`x = a_max` when centred).
     RightEdge,
     /// Of the two edges, the one with the larger effective range at the shortest length.
     LargerRange,
@@ -53,20 +54,34 @@ pub enum EffectiveRange {
 #[derive(Debug, Clone, PartialEq)]
 pub struct CrackOptions {
     position: Position,
-    angle: f64,
+    angle: Angle,
     lengths: Vec<f64>,
     face_friction: f64,
-    points: usize,
+    points: Option<usize>,
     effective: EffectiveRange,
+}
+
+/// The crack's angle: given, or the critical plane of an initiation parameter at the mouth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Angle {
+    /// Radians from the surface normal.
+    Given(f64),
+    /// The plane of this critical-plane parameter at the mouth over the steady cycle.
+    CriticalPlane(Parameter),
 }
 
 /// Most crack lengths in one analysis.
 pub const MAX_LENGTHS: usize = 1000;
 
+/// The parameters [`CrackOptions::with_critical_plane`] takes, by their report names.
+pub const CRITICAL_PLANE_PARAMETERS: &str =
+    "swt, fatemi_socie, findley, mwcm, fatemi_socie_max_plane or mcdiarmid (a parameter with a critical plane)";
+
 impl CrackOptions {
     /// Cracks at `position`, `angle_degrees` from the surface normal (strictly between -90 and
     /// 90), of the `lengths` given (each > 0, strictly ascending, 1 to [`MAX_LENGTHS`]), with
-    /// faces of friction coefficient `face_friction >= 0`. 40 quadrature points, MTS range.
+    /// faces of friction coefficient `face_friction >= 0`. [`default_points`] quadrature points,
+    /// MTS range.
     pub fn new(
         position: Position,
         angle_degrees: f64,
@@ -105,12 +120,33 @@ impl CrackOptions {
         }
         Ok(Self {
             position,
-            angle,
+            angle: Angle::Given(angle),
             lengths,
             face_friction,
-            points: 40,
+            points: None,
             effective: EffectiveRange::Mts,
         })
+    }
+
+    /// With the crack in the critical plane of `parameter` at the mouth (the issue's
+    /// `angle = "critical-plane"`): the in-plane search of [`crate::fatigue::critical_planes`]
+    /// over the mouth's surface stress through the steady cycle; the crack lies in that plane,
+    /// running into the body. Errors: a parameter without a critical plane (Crossland, Ruiz).
+    /// The analysis fails if the parameter's constants are missing or the plane is parallel to
+    /// the surface.
+    pub fn with_critical_plane(mut self, parameter: Parameter) -> Result<Self> {
+        if matches!(
+            parameter,
+            Parameter::Crossland | Parameter::RuizF1 | Parameter::RuizF2
+        ) {
+            return Err(Error::InvalidText {
+                field: "crack.initiation_parameter".into(),
+                value: parameter.name().into(),
+                valid: CRITICAL_PLANE_PARAMETERS,
+            });
+        }
+        self.angle = Angle::CriticalPlane(parameter);
+        Ok(self)
     }
 
     /// With `points` quadrature points per component (see [`super::MIN_POINTS`]).
@@ -123,7 +159,7 @@ impl CrackOptions {
                 max: super::MAX_POINTS as u64,
             });
         }
-        self.points = points;
+        self.points = Some(points);
         Ok(self)
     }
 
@@ -136,6 +172,19 @@ impl CrackOptions {
     /// The lengths.
     pub fn lengths(&self) -> &[f64] {
         &self.lengths
+    }
+}
+
+/// The quadrature points per component a crack at `angle_degrees` from the surface normal takes
+/// unless told: 40 to 45 degrees, 80 to 60 degrees, 160 beyond. The crack's mouth makes a wedge of
+/// `90 - |angle|` degrees with the surface, and the sharper it is the more slowly the solution
+/// converges (`docs/convergence.md`): under remote tension these give `F_I` within 0.05% at 45
+/// degrees, 0.4% at 60 and 0.5% at 75 of the 400-point values.
+pub fn default_points(angle_degrees: f64) -> usize {
+    match angle_degrees.abs() {
+        a if a <= 45.0 => 40,
+        a if a <= 60.0 => 80,
+        _ => 160,
     }
 }
 
@@ -242,7 +291,8 @@ pub fn mts_equivalent(k1: f64, k2: f64) -> f64 {
 /// Marches `history` (which must have cycles), takes the tractions of every increment of its
 /// last cycle and analyses the crack of `crack` at each length. Errors: no cycle; `[fatigue]`
 /// without `threshold` or `endurance_range`; a length above [`MAX_LENGTH_RATIO`] times the
-/// largest contact half-width; an active set that does not settle; any error of the march.
+/// largest contact half-width; a critical-plane angle without its parameter's constants or
+/// parallel to the surface; an active set that does not settle; any error of the march.
 pub fn analyse(
     contact: &Contact,
     history: &History,
@@ -264,6 +314,16 @@ pub fn analyse(
     let steps: Vec<usize> = (start + 1..=start + spc).collect();
     let states = stress::marched(contact, history, options, &steps)?;
     let a_max = states.iter().map(|s| s.half_width).fold(0.0, f64::max);
+    // The contact's outermost ends over the cycle: -a_max and a_max when centred; under a
+    // moment the ends move on their own.
+    let left_end = states
+        .iter()
+        .map(|s| s.ends.left)
+        .fold(f64::INFINITY, f64::min);
+    let right_end = states
+        .iter()
+        .map(|s| s.ends.right)
+        .fold(f64::NEG_INFINITY, f64::max);
     let longest = *crack.lengths.last().unwrap_or(&0.0);
     if longest > MAX_LENGTH_RATIO * a_max {
         return Err(Error::InvalidInput {
@@ -274,46 +334,102 @@ pub fn analyse(
         });
     }
     let l0 = el_haddad_length(dk_th, ds0);
-    let run = |mouth: f64, lengths: &[f64]| -> Result<Vec<CrackRow>> {
-        let mut rows = length_rows(mouth, lengths, contact, &states, crack)?;
+    let run = |mouth: f64, lengths: &[f64]| -> Result<(f64, Vec<CrackRow>)> {
+        let angle = match crack.angle {
+            Angle::Given(angle) => angle,
+            Angle::CriticalPlane(p) => critical_plane_angle(mouth, p, contact, &states, constants)?,
+        };
+        let points = crack
+            .points
+            .unwrap_or_else(|| default_points(angle.to_degrees()));
+        let mut rows = length_rows(mouth, angle, points, lengths, contact, &states, crack)?;
         for row in &mut rows {
             row.threshold = threshold(dk_th, l0, row.length);
         }
-        Ok(rows)
+        Ok((angle, rows))
     };
     let mouth = match crack.position {
-        Position::LeftEdge => -a_max,
-        Position::RightEdge => a_max,
+        Position::LeftEdge => left_end,
+        Position::RightEdge => right_end,
         Position::At(x) => x,
         Position::LargerRange => {
             let first = &crack.lengths[..1];
-            let left = run(-a_max, first)?[0].delta_k_eff;
-            let right = run(a_max, first)?[0].delta_k_eff;
+            let left = run(left_end, first)?.1[0].delta_k_eff;
+            let right = run(right_end, first)?.1[0].delta_k_eff;
             if right > left {
-                a_max
+                right_end
             } else {
-                -a_max
+                left_end
             }
         }
     };
-    let rows = run(mouth, &crack.lengths)?;
+    let (angle, rows) = run(mouth, &crack.lengths)?;
     let (verdict, arrest_length) = Verdict::of(&rows);
     Ok(CrackResult {
         rows,
         verdict,
         arrest_length,
         mouth,
-        angle: crack.angle.to_degrees(),
+        angle: angle.to_degrees(),
         half_width: a_max,
         steps,
     })
 }
 
+/// The crack angle (radians from the surface normal, positive towards `+x`) in the critical plane
+/// of `parameter` at the surface point `(mouth, 0)` over the kept increments. The plane's normal
+/// makes `alpha` with `+x` (towards `+z`); the crack runs along the plane into the body, so its
+/// angle is `-alpha` folded into (-90, 90] degrees.
+fn critical_plane_angle(
+    mouth: f64,
+    parameter: Parameter,
+    contact: &Contact,
+    states: &[MarchedTraction],
+    constants: &FatigueConstants,
+) -> Result<f64> {
+    let increments: Vec<(&stress::Traction, f64)> = states
+        .iter()
+        .map(|st| (&st.traction, st.load.bulk()))
+        .collect();
+    let history: Vec<stress::Stress> =
+        stress::fields(&increments, &contact.material, &[mouth], &[0.0])?
+            .iter()
+            .map(|f| f.at(0))
+            .collect();
+    let planes = fatigue::critical_planes(&history, &contact.material, constants);
+    let critical = match parameter {
+        Parameter::Swt => Some(planes.swt),
+        Parameter::FatemiSocie => planes.fatemi_socie,
+        Parameter::Findley => planes.findley,
+        Parameter::Mwcm => planes.mwcm,
+        Parameter::FatemiSocieMaxPlane => planes.fatemi_socie_max_plane,
+        Parameter::McDiarmid => planes.mcdiarmid,
+        _ => None,
+    }
+    .ok_or(Error::MissingConstants {
+        what: "critical-plane crack angle",
+        fields: "the [fatigue] constants of crack.initiation_parameter",
+    })?;
+    let alpha = critical.angle;
+    let degrees = if alpha > 90.0 { 180.0 - alpha } else { -alpha };
+    if degrees.abs() >= 90.0 - 1e-9 {
+        return Err(Error::InvalidInput {
+            field: "crack.angle".into(),
+            value: degrees,
+            valid: "a critical plane that cuts into the body (this one is parallel to the \
+                    surface at the mouth): give the angle in degrees instead",
+        });
+    }
+    Ok(degrees.to_radians())
+}
+
 /// Every length over the kept increments (thresholds left at 0 for the caller). The uncracked
-/// stress of an increment is evaluated at the collocation points of all lengths in one call, so
-/// the stress route's set-up is paid once per increment rather than once per length.
+/// stress is evaluated at the collocation points of all lengths under every increment in one
+/// call ([`stress::fields`]: the logarithms of a point and a cell are taken once for the cycle).
 fn length_rows(
     mouth: f64,
+    angle: f64,
+    points: usize,
     lengths: &[f64],
     contact: &Contact,
     states: &[MarchedTraction],
@@ -322,16 +438,19 @@ fn length_rows(
     let solvers = lengths
         .iter()
         .map(|&l| {
-            let c = Crack::new(mouth, options.angle, l)?;
-            CrackSolver::new(&c, &contact.material, options.points)
+            let c = Crack::new(mouth, angle, l)?;
+            CrackSolver::new(&c, &contact.material, points)
         })
         .collect::<Result<Vec<_>>>()?;
     let x: Vec<f64> = solvers.iter().flat_map(|s| s.x().iter().copied()).collect();
     let z: Vec<f64> = solvers.iter().flat_map(|s| s.z().iter().copied()).collect();
     let mut loads: Vec<Vec<(Vec<f64>, Vec<f64>)>> =
         vec![Vec::with_capacity(states.len()); solvers.len()];
-    for st in states {
-        let f = stress::field(&st.traction, st.load.bulk(), &contact.material, &x, &z)?;
+    let increments: Vec<(&stress::Traction, f64)> = states
+        .iter()
+        .map(|st| (&st.traction, st.load.bulk()))
+        .collect();
+    for f in stress::fields(&increments, &contact.material, &x, &z)? {
         let mut i = 0;
         for (solver, l) in solvers.iter().zip(&mut loads) {
             let (normal, shear): (Vec<f64>, Vec<f64>) = (i..i + solver.x().len())

@@ -17,19 +17,25 @@
 //!
 //! Stages: `kernel.rs` (the half-plane dislocation kernel), `quadrature.rs` (the Gauss-Jacobi
 //! rule), `solve.rs` (assembly and the open crack), `contact.rs` (faces in contact with friction,
-//! incrementally over the cycle), `growth.rs` (ranges, threshold, verdict, the driver).
+//! incrementally over the cycle), `growth.rs` (ranges, threshold, verdict, the driver). Two
+//! references check them: `reference.rs` (published factors, a weight function) and `graded.rs`
+//! (the open crack solved a second way, on panels graded towards the mouth).
 
 mod contact;
+pub mod graded;
 mod growth;
 mod kernel;
 mod quadrature;
+pub mod reference;
 mod solve;
 
 pub use contact::{FaceState, IncrementSolution};
 pub use growth::{
-    analyse, el_haddad_length, mts_equivalent, threshold, CrackOptions, CrackResult, CrackRow,
-    EffectiveRange, Position, Verdict, MAX_LENGTHS, MAX_LENGTH_RATIO,
+    analyse, default_points, el_haddad_length, mts_equivalent, threshold, CrackOptions,
+    CrackResult, CrackRow, EffectiveRange, Position, Verdict, CRITICAL_PLANE_PARAMETERS,
+    MAX_LENGTHS, MAX_LENGTH_RATIO,
 };
+pub use reference::EDGE_CRACK_FACTOR;
 pub use solve::{CrackSolver, TipFactors, MAX_POINTS, MIN_POINTS};
 
 use crate::error::{physical, Error, Result};

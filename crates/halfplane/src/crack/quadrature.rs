@@ -35,15 +35,7 @@ impl Rule {
             .collect();
         let weights = nodes.iter().map(|t| 2.0 * pi * (1.0 + t) / m).collect();
         let collocation = (1..=n).map(|k| (2.0 * pi * k as f64 / m).cos()).collect();
-        let bary = (0..n)
-            .map(|i| {
-                let p: f64 = (0..n)
-                    .filter(|&j| j != i)
-                    .map(|j| nodes[i] - nodes[j])
-                    .product();
-                1.0 / p
-            })
-            .collect();
+        let bary = barycentric_weights(&nodes);
         Ok(Self {
             nodes,
             weights,
@@ -55,19 +47,7 @@ impl Rule {
 
     /// The Lagrange basis through the nodes at `x` (barycentric form, exact at a node).
     pub fn basis(&self, x: f64) -> Vec<f64> {
-        if let Some(i) = self.nodes.iter().position(|&t| t == x) {
-            let mut e = vec![0.0; self.nodes.len()];
-            e[i] = 1.0;
-            return e;
-        }
-        let terms: Vec<f64> = self
-            .nodes
-            .iter()
-            .zip(&self.bary)
-            .map(|(t, l)| l / (x - t))
-            .collect();
-        let sum: f64 = terms.iter().sum();
-        terms.iter().map(|v| v / sum).collect()
+        lagrange_basis(&self.nodes, &self.bary, x)
     }
 
     /// `integral_u^1 w(t) L_i(t) dt` for every basis polynomial `L_i`. For `u >= 0`, with
@@ -102,6 +82,33 @@ impl Rule {
         }
         out
     }
+}
+
+/// The barycentric weights `1/prod_{k != i}(x_i - x_k)` of Lagrange interpolation through
+/// `nodes` (Berrut and Trefethen, *Barycentric Lagrange interpolation*, SIAM Review 46, 2004).
+pub(super) fn barycentric_weights(nodes: &[f64]) -> Vec<f64> {
+    (0..nodes.len())
+        .map(|i| {
+            let p: f64 = (0..nodes.len())
+                .filter(|&k| k != i)
+                .map(|k| nodes[i] - nodes[k])
+                .product();
+            1.0 / p
+        })
+        .collect()
+}
+
+/// Every Lagrange basis polynomial through `nodes` at `x` (the barycentric formula of the second
+/// kind with the weights `bary`; exact at a node, and valid outside the nodes' span too).
+pub(super) fn lagrange_basis(nodes: &[f64], bary: &[f64], x: f64) -> Vec<f64> {
+    if let Some(i) = nodes.iter().position(|&t| t == x) {
+        let mut e = vec![0.0; nodes.len()];
+        e[i] = 1.0;
+        return e;
+    }
+    let terms: Vec<f64> = nodes.iter().zip(bary).map(|(t, l)| l / (x - t)).collect();
+    let sum: f64 = terms.iter().sum();
+    terms.iter().map(|v| v / sum).collect()
 }
 
 #[cfg(test)]

@@ -34,25 +34,27 @@ pub struct TipFactors {
     pub k2: f64,
 }
 
-/// One crack assembled: the influence of the densities on the tractions and on the face
-/// displacements at the collocation points.
+/// One crack assembled. The densities `psi` solve `M psi = t`, `M` the influence of the
+/// densities on the tractions `t` (`s22` at every collocation point, then `s12`) that the
+/// dislocations must produce: `t = c - load` with `load` the uncracked tractions and `c` the
+/// tractions the faces carry (zero where they are apart). Everything the face contact needs is
+/// linear in `t`, so it is kept as maps of `t`: the face displacements (the face compliance
+/// `W = D M^-1`, `D` the tail integrals) and the tip factors.
 #[derive(Debug, Clone)]
 pub struct CrackSolver {
     pub(super) crack: Crack,
     pub(super) n: usize,
     /// `A = 2 mu/(pi (kappa + 1)) = E/(4 pi (1 - nu^2))`.
     pub(super) a: f64,
-    /// Rows `s22` at `k` then `s12` at `k`; columns `psi_1` then `psi_2` (row-major, 2n x 2n).
-    pub(super) influence: Vec<f64>,
-    /// `tail[k][i] = (l/2) integral_{u_k}^1 w L_i`: `A delta_j(s_k) = sum_i tail[k][i] psi_j,i`.
-    pub(super) tail: Vec<Vec<f64>>,
-    /// The Lagrange basis at the tip `t = 1`.
-    pub(super) at_tip: Vec<f64>,
+    /// `W` (row-major, 2n x 2n): rows `A delta_1` (slip) at `k` then `A delta_2` (opening) at `k`;
+    /// columns `t` (`s22` at `k` then `s12` at `k`).
+    pub(super) compliance: Vec<f64>,
+    /// `K_I` and `K_II` per unit `t` (rows of length 2n).
+    pub(super) tip_rows: [Vec<f64>; 2],
     /// Collocation points (body coordinates) and their distance from the mouth.
     x: Vec<f64>,
     z: Vec<f64>,
     s: Vec<f64>,
-    pub(super) open: Lu,
 }
 
 impl CrackSolver {
@@ -68,6 +70,7 @@ impl CrackSolver {
             });
         }
         let n = points;
+        let n2 = 2 * n;
         let rule = Rule::new(n)?;
         let l = crack.length;
         let (e1, e2) = crack.frame();
@@ -79,40 +82,73 @@ impl CrackSolver {
             .iter()
             .map(|u| 0.5 * l * (1.0 + u))
             .collect();
-        let mut influence = vec![0.0; 4 * n * n];
+        let mut influence = vec![0.0; n2 * n2];
         for (k, &sk) in s.iter().enumerate() {
             for (i, &xii) in xi.iter().enumerate() {
                 let scale = 0.5 * l * rule.weights[i];
                 for (j, b) in [along, C::new(e2[0], e2[1])].into_iter().enumerate() {
                     let st = dislocation_stress(at(sk), at(xii), b);
                     let [s22, s12] = resolve(st, e1, e2);
-                    influence[k * 2 * n + j * n + i] = scale * s22;
-                    influence[(n + k) * 2 * n + j * n + i] = scale * s12;
+                    influence[k * n2 + j * n + i] = scale * s22;
+                    influence[(n + k) * n2 + j * n + i] = scale * s12;
                 }
             }
         }
-        let tail = rule
+        let tail: Vec<Vec<f64>> = rule
             .collocation
             .iter()
             .map(|&u| rule.tail_integrals(u).iter().map(|v| 0.5 * l * v).collect())
             .collect();
-        let open = Lu::factor(influence.clone(), 2 * n).ok_or(Error::NoConvergence {
+        let lu = Lu::factor(influence, n2).ok_or(Error::NoConvergence {
             what: "the crack's influence matrix (singular)",
             iterations: 0,
             last_step: f64::NAN,
         })?;
+        // M^-1 column by column, stored row-major.
+        let mut inverse = vec![0.0; n2 * n2];
+        let mut e = vec![0.0; n2];
+        for c in 0..n2 {
+            e.fill(0.0);
+            e[c] = 1.0;
+            lu.solve(&mut e);
+            for (r, v) in e.iter().enumerate() {
+                inverse[r * n2 + c] = *v;
+            }
+        }
+        let row = |r: usize| &inverse[r * n2..(r + 1) * n2];
+        let mut compliance = vec![0.0; n2 * n2];
+        for (k, tk) in tail.iter().enumerate() {
+            for j in 0..2 {
+                let out = &mut compliance[(j * n + k) * n2..(j * n + k + 1) * n2];
+                for (i, w) in tk.iter().enumerate() {
+                    for (o, v) in out.iter_mut().zip(row(j * n + i)) {
+                        *o += w * v;
+                    }
+                }
+            }
+        }
+        // K_I = c psi_2(1), K_II = -c psi_1(1), psi_j(1) the interpolant at the tip.
+        let at_tip = rule.basis(1.0);
+        let c = std::f64::consts::PI * (2.0 * std::f64::consts::PI * l).sqrt();
+        let mut tip_rows = [vec![0.0; n2], vec![0.0; n2]];
+        for (i, w) in at_tip.iter().enumerate() {
+            for (c1, v) in tip_rows[0].iter_mut().zip(row(n + i)) {
+                *c1 += c * w * v;
+            }
+            for (c2, v) in tip_rows[1].iter_mut().zip(row(i)) {
+                *c2 -= c * w * v;
+            }
+        }
         let nu = material.poisson_ratio();
         Ok(Self {
             crack: *crack,
             n,
             a: material.youngs_modulus() / (4.0 * std::f64::consts::PI * (1.0 - nu * nu)),
-            influence,
-            tail,
-            at_tip: rule.basis(1.0),
+            compliance,
+            tip_rows,
             x: s.iter().map(|&si| crack.mouth + si * e1[0]).collect(),
             z: s.iter().map(|&si| si * e1[1]).collect(),
             s,
-            open,
         })
     }
 
@@ -151,10 +187,17 @@ impl CrackSolver {
     /// equal to the number of points, or values not finite.
     pub fn open(&self, normal: &[f64], shear: &[f64]) -> Result<TipFactors> {
         self.check_loads(normal, shear)?;
-        let mut rhs: Vec<f64> = normal.iter().map(|v| -v).collect();
-        rhs.extend_from_slice(shear); // s12 = -tau
-        self.open.solve(&mut rhs);
-        Ok(self.tip(&rhs))
+        let t = self.free_tractions(normal, shear);
+        Ok(self.tip(&t))
+    }
+
+    /// `t` of the open crack: minus the uncracked `s22 = normal`, `s12 = -shear`.
+    pub(super) fn free_tractions(&self, normal: &[f64], shear: &[f64]) -> Vec<f64> {
+        normal
+            .iter()
+            .map(|v| -v)
+            .chain(shear.iter().copied())
+            .collect()
     }
 
     pub(super) fn check_loads(&self, normal: &[f64], shear: &[f64]) -> Result<()> {
@@ -181,20 +224,18 @@ impl CrackSolver {
         Ok(())
     }
 
-    /// `K_I`, `K_II` from the densities `psi` (`psi_1` then `psi_2`).
-    pub(super) fn tip(&self, psi: &[f64]) -> TipFactors {
-        let n = self.n;
-        let at = |j: usize| -> f64 { (0..n).map(|i| self.at_tip[i] * psi[j * n + i]).sum() };
-        let c = std::f64::consts::PI * (2.0 * std::f64::consts::PI * self.crack.length).sqrt();
+    /// `K_I`, `K_II` of the tractions `t`.
+    pub(super) fn tip(&self, t: &[f64]) -> TipFactors {
+        let dot = |r: &[f64]| r.iter().zip(t).map(|(a, b)| a * b).sum::<f64>();
         TipFactors {
-            k1: c * at(1),
-            k2: -c * at(0),
+            k1: dot(&self.tip_rows[0]),
+            k2: dot(&self.tip_rows[1]),
         }
     }
 }
 
 /// `[s22, s12]` of `[sxx, szz, sxz]` in the frame `(e1, e2)` (unit vectors in `(x, z)`).
-fn resolve(st: [f64; 3], e1: [f64; 2], e2: [f64; 2]) -> [f64; 2] {
+pub(super) fn resolve(st: [f64; 3], e1: [f64; 2], e2: [f64; 2]) -> [f64; 2] {
     let [sxx, szz, sxz] = st;
     let s22 = e2[0] * e2[0] * sxx + 2.0 * e2[0] * e2[1] * sxz + e2[1] * e2[1] * szz;
     let s12 = e1[0] * e2[0] * sxx + (e1[0] * e2[1] + e1[1] * e2[0]) * sxz + e1[1] * e2[1] * szz;
@@ -226,12 +267,16 @@ impl Lu {
                 }
                 piv.swap(p, c);
             }
-            for r in c + 1..n {
-                let f = a[r * n + c] / pivot;
-                a[r * n + c] = f;
+            // Rows below the pivot row, each updated from the pivot row's tail (slices, so the
+            // update is a vector loop without bounds checks).
+            let (upper, lower) = a.split_at_mut((c + 1) * n);
+            let pivot_row = &upper[c * n + c + 1..(c + 1) * n];
+            for row in lower.chunks_exact_mut(n) {
+                let f = row[c] / pivot;
+                row[c] = f;
                 if f != 0.0 {
-                    for k in c + 1..n {
-                        a[r * n + k] -= f * a[c * n + k];
+                    for (x, p) in row[c + 1..].iter_mut().zip(pivot_row) {
+                        *x -= f * p;
                     }
                 }
             }
@@ -244,11 +289,13 @@ impl Lu {
         let n = self.n;
         let mut x: Vec<f64> = self.piv.iter().map(|&p| b[p]).collect();
         for r in 0..n {
-            let s: f64 = (0..r).map(|k| self.lu[r * n + k] * x[k]).sum();
+            let row = &self.lu[r * n..r * n + r];
+            let s: f64 = row.iter().zip(&x[..r]).map(|(a, b)| a * b).sum();
             x[r] -= s;
         }
         for r in (0..n).rev() {
-            let s: f64 = (r + 1..n).map(|k| self.lu[r * n + k] * x[k]).sum();
+            let row = &self.lu[r * n + r + 1..(r + 1) * n];
+            let s: f64 = row.iter().zip(&x[r + 1..]).map(|(a, b)| a * b).sum();
             x[r] = (x[r] - s) / self.lu[r * n + r];
         }
         b.copy_from_slice(&x);

@@ -95,6 +95,18 @@ fn input() -> Vec<Error> {
             smallest: -1.0,
             largest: 1.0,
         },
+        Error::GridTooNarrow {
+            field: "wear.span",
+            end: -1.5,
+        },
+        Error::WearStopped {
+            cycle: 12,
+            cause: Box::new(Error::InvalidInput {
+                field: "gap".into(),
+                value: 1.0,
+                valid: "a gap whose contact carries the load",
+            }),
+        },
     ]
 }
 

@@ -93,6 +93,8 @@ impl Error {
             Error::OutsideProfile { .. } => "OutsideProfile",
             Error::AsymmetricProfile { .. } => "AsymmetricProfile",
             Error::MomentOutsideTable { .. } => "MomentOutsideTable",
+            Error::WearStopped { .. } => "WearStopped",
+            Error::GridTooNarrow { .. } => "GridTooNarrow",
         }
     }
 
@@ -101,6 +103,8 @@ impl Error {
     /// the table has to be extended.
     pub fn kind(&self) -> ErrorKind {
         match self {
+            // A wear run that stopped is whatever stopped it.
+            Error::WearStopped { cause, .. } => cause.kind(),
             Error::InvalidInput { .. }
             | Error::InvalidCount { .. }
             | Error::TooManyIncrements { .. }
@@ -117,7 +121,8 @@ impl Error {
             | Error::UnequalColumns { .. }
             | Error::LengthMismatch { .. }
             | Error::OutsideProfile { .. }
-            | Error::MomentOutsideTable { .. } => ErrorKind::Input,
+            | Error::MomentOutsideTable { .. }
+            | Error::GridTooNarrow { .. } => ErrorKind::Input,
             Error::SlipReversesInHalf { .. }
             | Error::NoStickZone { .. }
             | Error::StickZoneOutsideContact { .. }
@@ -142,6 +147,7 @@ impl Error {
     /// valid. Gross sliding has none: the march slides too.
     pub fn alternative(&self) -> Option<Alternative> {
         match self {
+            Error::WearStopped { .. } => None,
             Error::SlipReversesInHalf { .. } | Error::StickZoneOutsideContact { .. } => {
                 Some(Alternative::March)
             }
@@ -176,7 +182,8 @@ impl Error {
             | Error::LengthMismatch { .. }
             | Error::OutsideProfile { .. }
             | Error::AsymmetricProfile { .. }
-            | Error::MomentOutsideTable { .. } => None,
+            | Error::MomentOutsideTable { .. }
+            | Error::GridTooNarrow { .. } => None,
         }
     }
 }

@@ -105,8 +105,7 @@ impl Marcher {
             let e = self.edge_factors(i, ends0, ends1);
             let tau = self.onset[i];
             let p_mean = e.mean(tau);
-            energy += f
-                * sign
+            let pressure_slip = sign
                 * if self.start_cells[i] == Cell::Stick {
                     p_mean * s
                 } else {
@@ -114,6 +113,8 @@ impl Marcher {
                     let early = if weight > 0.0 { self.trial_slip[i] } else { s };
                     early * p_mean + (s - early) * e.mean(mean_onset)
                 };
+            energy += f * pressure_slip;
+            self.pressure_slip[i] += pressure_slip;
             let (p_tau, p1) = (e.at(tau), self.pressure[i]);
             self.known[i] = (1.0 - tau) * sign * f * (p_mean - 0.5 * (p_tau + p1));
             let q_tau = if tau > 0.0 {

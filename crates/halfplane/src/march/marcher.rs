@@ -22,6 +22,15 @@ use crate::normal::Contact;
 use crate::normal_moment::NormalContact;
 use std::f64::consts::PI;
 
+/// A worn gap and its last solution on the grid.
+#[derive(Debug, Clone)]
+struct Gap {
+    gap: Vec<f64>,
+    solution: Option<super::gap::GapContact>,
+    /// The (P, M) the solution is of; `None` after the gap changed.
+    solved_for: Option<(f64, f64)>,
+}
+
 /// What a cell does in the current increment.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Cell {
@@ -79,6 +88,12 @@ pub struct Marcher {
     state: Option<NormalContact>,
     /// The contact the current sub-step goes to.
     target: Option<NormalContact>,
+    /// A worn gap at the cell centres (`set_gap`): the contact's pressure comes from the grid
+    /// (`gap.rs`) instead of the profile's normal problem.
+    gap: Option<Gap>,
+    /// `integral p |ds|` at each cell since the last `take_pressure_slip` (the energy
+    /// quadrature's per-cell sums without f): what wear removes.
+    pub(super) pressure_slip: Vec<f64>,
     pub(super) cells: Vec<Cell>,
     /// The last solve of `evaluate.rs`: its layout, its boundaries' solutions and its shift.
     pub(super) layout: Option<Layout>,
@@ -178,6 +193,8 @@ impl Marcher {
             pressure_start: zeros.clone(),
             state: None,
             target: None,
+            gap: None,
+            pressure_slip: zeros.clone(),
             cells: vec![Cell::Out; n],
             layout: None,
             end_solutions: Vec::new(),
@@ -242,13 +259,17 @@ impl Marcher {
                 limit: f * load.normal(),
             });
         }
-        let target = match &self.state {
-            Some(near) => self
+        let target = match (&self.gap, &self.state) {
+            (Some(_), _) => self.grid_target(&load, step)?,
+            (None, Some(near)) => self
                 .contact
-                .contact_near(load.normal(), load.moment(), near),
-            None => self.contact.contact_at(&load),
-        }
-        .map_err(|e| e.with_moment_field(&format!("{name}.moment")))?;
+                .contact_near(load.normal(), load.moment(), near)
+                .map_err(|e| e.with_moment_field(&format!("{name}.moment")))?,
+            (None, None) => self
+                .contact
+                .contact_at(&load)
+                .map_err(|e| e.with_moment_field(&format!("{name}.moment")))?,
+        };
         let (lower, upper) = (
             self.x[0] - 0.5 * self.width,
             self.x[self.x.len() - 1] + 0.5 * self.width,
@@ -593,7 +614,9 @@ impl Marcher {
             }
         }
         let energy = self.dissipation(ends_start, target.ends(), step)?;
-        if last && self.options.sub_cell() {
+        // A worn gap's pressure is known at the cell centres only, not as the profile's closed
+        // form that the located boundaries' limit moments integrate (`moments.rs`).
+        if last && self.options.sub_cell() && self.gap.is_none() {
             passes += self.view(load, &target, d_sigma, step)?;
         } else {
             self.view = None;
@@ -645,6 +668,17 @@ impl Marcher {
         );
         let (lower, upper) = (now.left.min(then.left), now.right.max(then.right));
         for i in 0..self.x.len() {
+            if let Some(gap) = &self.gap {
+                // On the grid the solved pressure says which cells touch.
+                let p = gap.solution.as_ref().map_or(0.0, |s| s.pressure[i]);
+                self.pressure[i] = p;
+                match (p > 0.0, self.cells[i]) {
+                    (false, _) => self.cells[i] = Cell::Out,
+                    (true, Cell::Out) => self.cells[i] = Cell::Stick,
+                    _ => {}
+                }
+                continue;
+            }
             let inside = self.x[i] > lower && self.x[i] < upper;
             self.pressure[i] = if inside {
                 self.contact.pressure_at(target, self.x[i])?
@@ -659,6 +693,119 @@ impl Marcher {
         }
         self.start_cells.copy_from_slice(&self.cells);
         Ok(())
+    }
+
+    /// Marches on with the gap `gap` (one value per cell, at the cell centres) in place of the
+    /// profile's: every later increment's pressure is the grid's solution of it (`gap.rs`),
+    /// which must then keep P and M constant (a worn gap's contact is solved for one load; the
+    /// moving edges of a changing load are the profile's normal problem's).
+    pub(crate) fn set_gap(&mut self, gap: Vec<f64>) {
+        let solution = self.gap.take().and_then(|g| g.solution);
+        self.gap = Some(Gap {
+            gap,
+            solution,
+            solved_for: None,
+        });
+    }
+
+    /// The contact of the worn gap under `load`: solved again when the gap or the load changed
+    /// (from the last solution's contact set), as a [`NormalContact`] whose ends are the outer
+    /// edges of the outermost touching cells.
+    fn grid_target(&mut self, load: &LoadPoint, step: usize) -> Result<NormalContact> {
+        let key = (load.normal(), load.moment());
+        let gap = self.gap.as_mut().expect("grid_target is called with a gap");
+        if let (Some(state), Some(before)) = (self.state, gap.solved_for) {
+            if before != key {
+                return Err(Error::InvalidInput {
+                    field: format!("history row {step}.normal"),
+                    value: load.normal(),
+                    valid: "the normal load and moment of the previous row: a worn gap's contact is solved for one load",
+                });
+            }
+            if gap.solution.is_some() && state.normal() == key.0 {
+                return Ok(state);
+            }
+        }
+        let mut grid = super::gap::Grid {
+            kernel: &mut self.kernel,
+            x: &self.x,
+            width: self.width,
+            compliance: self.compliance,
+        };
+        let solution = grid.solve(&gap.gap, key.0, key.1, gap.solution.as_ref())?;
+        let first = solution.pressure.iter().position(|&p| p > 0.0);
+        let last = solution.pressure.iter().rposition(|&p| p > 0.0);
+        let (Some(first), Some(last)) = (first, last) else {
+            return Err(Error::InvalidInput {
+                field: "history.normal".into(),
+                value: key.0,
+                valid: "a load the worn gap's contact carries",
+            });
+        };
+        let n = self.x.len();
+        if first == 0 || last == n - 1 {
+            return Err(Error::GridTooNarrow {
+                field: "wear.span",
+                end: self.x[if first == 0 { 0 } else { n - 1 }],
+            });
+        }
+        let ends = PerEdge {
+            left: self.x[first] - 0.5 * self.width,
+            right: self.x[last] + 0.5 * self.width,
+        };
+        gap.solution = Some(solution.clone());
+        gap.solved_for = Some(key);
+        Ok(NormalContact::on_grid(
+            key.0,
+            key.1,
+            ends,
+            solution.rotation,
+        ))
+    }
+
+    /// The bodies slide by `distance` (signed: positive in the sense positive Q drives) at the
+    /// current P and M, Q at the friction limit `sign(distance) f P`: every contact cell carries
+    /// `q = sign f p` and slips by the distance (at constant pressure the traction does not change
+    /// while they slide). The energy is `f p |distance|` at each cell (`integral p |ds|` exact).
+    pub(super) fn slide(&mut self, distance: f64) -> Result<()> {
+        let Some(load) = self.load else {
+            return Err(Error::InvalidInput {
+                field: "history.amplitude".into(),
+                value: distance,
+                valid: "a slide after the contact is loaded",
+            });
+        };
+        let (sign, f) = (distance.signum(), self.friction);
+        // What the fields report is now the sliding traction, with no stick-slip boundary.
+        self.view = None;
+        self.reported_kinks.clear();
+        let mut energy = 0.0;
+        for i in 0..self.x.len() {
+            if self.cells[i] == Cell::Out {
+                continue;
+            }
+            self.traction[i] = sign * f * self.pressure[i];
+            self.cells[i] = Cell::Slip(sign);
+            self.slip[i] += distance;
+            self.pressure_slip[i] += self.pressure[i] * distance.abs();
+            energy += f * self.pressure[i] * distance.abs();
+        }
+        self.energy += energy * self.width;
+        self.load = Some(
+            LoadPoint::new(
+                "slide",
+                load.normal(),
+                sign * f * load.normal(),
+                load.bulk(),
+            )?
+            .with_moment("slide", load.moment())?,
+        );
+        Ok(())
+    }
+
+    /// `integral p |ds|` at each cell since the last call, and zero again.
+    pub(crate) fn take_pressure_slip(&mut self) -> Vec<f64> {
+        std::mem::replace(&mut self.pressure_slip, vec![0.0; self.x.len()])
     }
 
     /// Ends the sub-step at `load` (contact `target`): the traction increments and the settled

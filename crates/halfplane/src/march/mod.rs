@@ -50,12 +50,15 @@
 //! `solve.rs` (the stick cells' linear systems), `toeplitz.rs` (FFT products and exact inverses of
 //! stick runs), `marcher.rs` (the active set and the moving-edge sub-steps), `dissipation.rs` (the
 //! energy of a sub-step), `cycles.rs` (the driver, per-cycle slip ranges and shakedown), and for
-//! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs` and `boundary.rs`. It never holds code of its own, only declarations and re-exports.
+//! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs` and `boundary.rs`; `gap.rs`
+//! (the normal problem of a worn gap on the grid) and `worn.rs` (the march over a worn gap) serve
+//! wear. It never holds code of its own, only declarations and re-exports.
 
 mod boundary;
 mod cycles;
 mod dissipation;
 mod evaluate;
+pub(crate) mod gap;
 mod kernel;
 mod layout;
 mod marcher;
@@ -63,8 +66,10 @@ mod moments;
 mod solve;
 mod toeplitz;
 mod types;
+mod worn;
 
 pub use boundary::TractionKink;
 pub use cycles::{march, march_steady, march_steady_until, march_until};
 pub use marcher::Marcher;
 pub use types::{CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, StepReport};
+pub use worn::Worn;

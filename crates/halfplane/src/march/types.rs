@@ -153,7 +153,9 @@ impl MarchOptions {
     /// error of a Cattaneo load falls from 8e-3 to 1.2e-4 of f p0 at 400 cells. The march goes on
     /// from the cell-level solution, so slips, energies and the cycle's repetition are those of
     /// the cell-level active set. It costs several solves per increment (`BENCHMARKS.md`),
-    /// hence off by default.
+    /// hence off by default. A march over a worn gap ([`Worn`](super::Worn), once its gap is
+    /// set) reports the cell-level solution whatever this says: its pressure is known only at
+    /// the cell centres, not as the profile's closed form the located boundaries integrate.
     pub fn with_sub_cell_boundaries(mut self, on: bool) -> Result<Self> {
         self.sub_cell = on;
         Ok(self)

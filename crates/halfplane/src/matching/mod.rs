@@ -24,10 +24,10 @@ mod solve;
 pub use report::{
     Compared, MatchReport, MatchWarning, Side, EDGE_MOTION_WARNING, SLIP_ZONE_WARNING,
 };
-pub use solve::{map_history, map_point};
+pub use solve::{map_history, map_history_at, map_point, map_point_at};
 
 use crate::error::{Error, Result};
-use crate::labels::{display_as_str, GivenPoint};
+use crate::labels::{display_as_str, Edge, GivenPoint};
 use crate::load::Cycle;
 use crate::normal::Contact;
 use crate::steady::{Regime, SteadyOptions};
@@ -158,8 +158,24 @@ pub fn match_cycle(
     test: &Contact,
     mode: Mode,
 ) -> Result<MatchReport> {
+    match_cycle_at(prototype, cycle, test, mode, None)
+}
+
+/// [`match_cycle`] at a chosen edge of the prototype: under a moment, or on an asymmetric
+/// profile, K_N differs at the prototype's two edges, and a test without a moment (a centred
+/// contact, one K_N) can reproduce only one of them. The test's P follows the prototype's `K_N`
+/// at `edge`; Q and sigma still match K_T at both edges (K_T does not depend on the moment), or
+/// the exact slip zones. `None`: the edge whose `K_T` changes more over the cycle (the one that
+/// slips more). Without a moment on a symmetric prototype both edges give the same test.
+pub fn match_cycle_at(
+    prototype: &Contact,
+    cycle: &Cycle,
+    test: &Contact,
+    mode: Mode,
+    edge: Option<Edge>,
+) -> Result<MatchReport> {
     let options = SteadyOptions::default();
-    let proto = Side::analyse(prototype, cycle, &options, MatchSide::Prototype)?;
+    let proto = Side::analyse(prototype, cycle, &options, MatchSide::Prototype, edge)?;
     if mode == Mode::Exact && proto.steady.regime == Regime::FullStick {
         return Err(Error::NoValidMatch {
             side: MatchSide::Prototype,
@@ -171,7 +187,13 @@ pub fn match_cycle(
         Mode::Asymptotic => solve::asymptotic_cycle(&proto, test)?,
         Mode::Exact => solve::exact_cycle(&proto, test)?,
     };
-    let test_side = Side::analyse(test, &test_cycle, &options, MatchSide::Test)?;
+    let test_side = Side::analyse(
+        test,
+        &test_cycle,
+        &options,
+        MatchSide::Test,
+        Some(proto.edge),
+    )?;
     // The exact test was built with the prototype's slip zones, but eq. (1) decides the regime
     // first: a cycle it calls full stick has none.
     if mode == Mode::Exact && test_side.steady.regime == Regime::FullStick {

@@ -32,6 +32,9 @@ pub struct Side {
     pub steady: SteadyState,
     /// `K_N`, `K_T`, `S` and a at the first and second points as given.
     pub edges: PerPoint<EdgeState>,
+    /// The edge whose state is matched: its `K_N` (the same at both edges of a centred
+    /// contact) and its motion over the cycle.
+    pub edge: Edge,
 }
 
 impl Side {
@@ -43,6 +46,7 @@ impl Side {
         cycle: &Cycle,
         options: &SteadyOptions,
         side: MatchSide,
+        edge: Option<Edge>,
     ) -> Result<Self> {
         let steady =
             steady::analyse(contact, cycle, options).map_err(|e| MatchConstraint::wrap(side, e))?;
@@ -64,15 +68,29 @@ impl Side {
             });
         }
         let edges = PerPoint {
-            first: EdgeState::at(contact, &first)?,
-            second: EdgeState::at(contact, &second)?,
+            first: EdgeState::of(&first, steady.contacts.first)?,
+            second: EdgeState::of(&second, steady.contacts.second)?,
         };
+        // By default the edge whose K_T changes more over the cycle (the one that slips more).
+        let range =
+            |e: Edge| (edges.second.shear_intensity[e] - edges.first.shear_intensity[e]).abs();
+        let edge = edge.unwrap_or(if range(Edge::Left) >= range(Edge::Right) {
+            Edge::Left
+        } else {
+            Edge::Right
+        });
         Ok(Self {
             contact: contact.clone(),
             cycle: *cycle,
             steady,
             edges,
+            edge,
         })
+    }
+
+    /// `K_N` at the matched edge at `point`.
+    pub fn normal_intensity(&self, point: GivenPoint) -> f64 {
+        self.edges[point].contact.normal_intensity(self.edge)
     }
 
     /// The load at `point` as given.
@@ -89,9 +107,19 @@ impl Side {
         self.steady.slip_zones.unwrap_or_default()
     }
 
-    /// Contact-edge motion over the cycle, `a(second point) - a(first point)`.
+    /// Contact-edge motion over the cycle, `a(second point) - a(first point)`: under a moment, the
+    /// outward movement of the matched edge (`b2` rising, or `b1` falling) from the first point
+    /// to the second.
     pub fn edge_motion(&self) -> f64 {
-        self.steady.half_width.second - self.steady.half_width.first
+        let (first, second) = (self.steady.contacts.first, self.steady.contacts.second);
+        let (then, now) = (first.end(self.edge), second.end(self.edge));
+        if first.is_centred() && second.is_centred() {
+            self.steady.half_width.second - self.steady.half_width.first
+        } else if self.edge == Edge::Right {
+            now - then
+        } else {
+            then - now
+        }
     }
 }
 
@@ -194,7 +222,7 @@ pub struct MatchReport {
     pub prototype: Side,
     /// The test found.
     pub test: Side,
-    /// `K_N` (eq. (31)) per point.
+    /// `K_N` (eq. (31)) per point, at the matched edge ([`Side::edge`]).
     pub normal_intensity: PerPoint<Compared>,
     /// `K_T` (eq. (32)) per edge and point.
     pub shear_intensity: PerEdge<PerPoint<Compared>>,
@@ -216,6 +244,9 @@ impl MatchReport {
         let per_point = |f: &dyn Fn(&EdgeState) -> f64| {
             PerPoint::from_fn(|p| Compared::new(f(&prototype.edges[p]), f(&test.edges[p])))
         };
+        let normal_intensity = PerPoint::from_fn(|p| {
+            Compared::new(prototype.normal_intensity(p), test.normal_intensity(p))
+        });
         let mean = |s: &Side, e: Edge| {
             0.5 * (s.edges.first.shear_intensity[e] + s.edges.second.shear_intensity[e])
         };
@@ -261,7 +292,7 @@ impl MatchReport {
         }
         Self {
             mode,
-            normal_intensity: per_point(&|s| s.normal_intensity),
+            normal_intensity,
             shear_intensity: PerEdge::from_fn(|e| per_point(&|s| s.shear_intensity[e])),
             mean_shear_intensity: PerEdge::from_fn(|e| {
                 Compared::new(mean(&prototype, e), mean(&test, e))

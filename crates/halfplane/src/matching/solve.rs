@@ -6,7 +6,7 @@ use super::report::Side;
 use super::{LoadIndex, MatchConstraint, MatchSide};
 use crate::asymptotic::EdgeState;
 use crate::error::{Error, Result};
-use crate::labels::{GivenPoint, PerPoint};
+use crate::labels::{Edge, GivenPoint, PerPoint};
 use crate::load::{Cycle, LoadPoint};
 use crate::normal::Contact;
 use crate::roots::{bracket_positive, brent, Bracket};
@@ -43,15 +43,17 @@ pub(crate) fn matched_half_width(
     }
 }
 
-/// Normal load and half-width of the test at the prototype's `K_N`, starting the search from
-/// `start`.
+/// Normal load and half-width of the test at the prototype's `K_N` at `edge`, starting the
+/// search from `start`.
 fn matched_normal(
     test: &Contact,
     proto: &EdgeState,
+    edge: Edge,
     start: f64,
     load: LoadIndex,
 ) -> Result<(f64, f64)> {
-    let a = matched_half_width(test, proto.normal_intensity, start, load)?;
+    let target = proto.contact.normal_intensity(edge);
+    let a = matched_half_width(test, target, start, load)?;
     Ok((test.load(a)?, a))
 }
 
@@ -71,8 +73,27 @@ pub fn map_point(
     index: LoadIndex,
     start: Option<f64>,
 ) -> Result<(LoadPoint, f64)> {
+    map_point_at(prototype, test, load, index, start, Edge::Left)
+}
+
+/// [`map_point`] with the test's `K_N` from the prototype's at `matched` (the same at both edges
+/// without a moment on a symmetric profile).
+pub fn map_point_at(
+    prototype: &Contact,
+    test: &Contact,
+    load: &LoadPoint,
+    index: LoadIndex,
+    start: Option<f64>,
+    matched: Edge,
+) -> Result<(LoadPoint, f64)> {
     let edge = EdgeState::at(prototype, load)?;
-    let (normal, a) = matched_normal(test, &edge, start.unwrap_or(edge.half_width), index)?;
+    let (normal, a) = matched_normal(
+        test,
+        &edge,
+        matched,
+        start.unwrap_or(edge.half_width),
+        index,
+    )?;
     let ratio = (a / edge.half_width).sqrt();
     let point = LoadPoint::new(
         &index.to_string(),
@@ -90,12 +111,24 @@ pub fn map_history(
     test: &Contact,
     loads: &[LoadPoint],
 ) -> Result<Vec<LoadPoint>> {
+    map_history_at(prototype, test, loads, Edge::Left)
+}
+
+/// [`map_history`] with each row's `K_N` taken at the prototype's edge `matched`
+/// ([`map_point_at`]).
+pub fn map_history_at(
+    prototype: &Contact,
+    test: &Contact,
+    loads: &[LoadPoint],
+    matched: Edge,
+) -> Result<Vec<LoadPoint>> {
     let mut start = None;
     loads
         .iter()
         .enumerate()
         .map(|(i, load)| {
-            let (point, a) = map_point(prototype, test, load, LoadIndex::Row(i + 1), start)?;
+            let (point, a) =
+                map_point_at(prototype, test, load, LoadIndex::Row(i + 1), start, matched)?;
             start = Some(a);
             Ok(point)
         })
@@ -105,12 +138,13 @@ pub fn map_history(
 /// The asymptotic test cycle: each point mapped by [`map_point`].
 pub(super) fn asymptotic_cycle(proto: &Side, test: &Contact) -> Result<Cycle> {
     let [first, second] = GivenPoint::BOTH.map(|p| {
-        map_point(
+        map_point_at(
             &proto.contact,
             test,
             &proto.point(p),
             LoadIndex::Point(p),
             None,
+            proto.edge,
         )
         .map(|(point, _)| point)
     });
@@ -142,7 +176,7 @@ pub(super) fn exact_cycle(proto: &Side, test: &Contact) -> Result<Cycle> {
     for p in GivenPoint::BOTH {
         let edge = &proto.edges[p];
         (normal[p], half_width[p]) =
-            matched_normal(test, edge, edge.half_width, LoadIndex::Point(p))?;
+            matched_normal(test, edge, proto.edge, edge.half_width, LoadIndex::Point(p))?;
     }
     let slip = proto.slip_zones();
     let zone = StickZone {

@@ -359,7 +359,26 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
         &cycle.high(),
         0.5 * (low.rotation() + high.rotation()),
     );
-    let (zone, iterations) = stick_zone(contact, &segment, None, options)?;
+    // Under a moment, a start from the end contacts (the smaller scaled to P_K as Hertz's
+    // a ~ sqrt(P), centred between the two) instead of the fresh normal solves of `zone_guess`.
+    let guess = (!path.is_centred()).then(|| {
+        let small = if low.half_width() < high.half_width() {
+            low
+        } else {
+            high
+        };
+        let p_k = 0.5 * segment.normal_sum - segment.shear_range / (2.0 * f);
+        (
+            small.half_width() * (p_k.max(0.0) / small.normal()).sqrt(),
+            0.5 * (low.centre() + high.centre()),
+        )
+    });
+    let (zone, iterations) = match stick_zone(contact, &segment, guess, options) {
+        Ok(found) => found,
+        // A start that does not converge, or leaves a table: the careful start instead.
+        Err(_) if guess.is_some() => stick_zone(contact, &segment, None, options)?,
+        Err(e) => return Err(e),
+    };
     if !(common.left < zone.left && zone.left < zone.right && zone.right < common.right) {
         return Err(Error::StickZoneOutsideContact {
             left: zone.left,

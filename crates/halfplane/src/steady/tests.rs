@@ -3,8 +3,9 @@
 //! became private to the crate. Helpers as in `tests/common`.
 
 use super::{analyse, stick_zone, validity, Method, Regime, Segment, SteadyOptions};
-use crate::labels::{Edge, Half};
+use crate::labels::{Edge, Half, PerEdge};
 use crate::{reference, Contact, Cycle, Error, Friction, LoadPoint, Material, Profile, Shape};
+use std::f64::consts::PI;
 
 const RADIUS: f64 = reference::RADIUS;
 
@@ -252,6 +253,105 @@ fn on_random_cycles_sampling_never_contradicts_the_start_of_half_test() {
         assert!(
             sampled > 1000 && rejected > 100,
             "{shape}: {sampled}, {rejected}"
+        );
+    }
+}
+
+#[test]
+fn under_a_moment_every_accepted_cycle_passes_the_sampled_partial_path() {
+    // Under a moment `check_slip_grows` accepts a cycle on a convex profile when the bounds on
+    // the rotation's rate settle it (docs/validity.md, "Under a moment"), and samples both halves
+    // otherwise. The independent check, as for the symmetric theorem above: on a grid of cycles
+    // with moments changing along the cycle (centroids from -0.2 to 0.2 mm, contacts of 0.6 to
+    // 1.3 mm) and tension around the reversal boundary, every cycle `analyse` accepts as partial
+    // slip passes the partial path solved at 64 points per half. Hertz, symmetric and asymmetric
+    // flat-rounded punches and a power law; the grid must reach both verdicts for each.
+    let profiles = [
+        Profile::hertz(RADIUS).unwrap(),
+        Profile::flat_rounded(0.3, RADIUS).unwrap(),
+        Profile::flat_rounded_asymmetric(0.3, 25.0, 70.0).unwrap(),
+        Profile::power_law(0.02, 2.5).unwrap(),
+    ];
+    let options = SteadyOptions::default();
+    for profile in profiles {
+        let shape = label(&profile);
+        let (mut sampled, mut rejected) = (0, 0);
+        for f in [0.4, 0.8] {
+            let c = Contact::new(
+                profile.clone(),
+                Material::new(200_000.0, 0.3).unwrap(),
+                Friction::new(f).unwrap(),
+            );
+            for p2 in [700.0, 1400.0] {
+                for (e1, e2) in [(0.0, 0.1), (0.1, -0.1), (-0.2, 0.05), (0.15, 0.2)] {
+                    for s in (0..=6).map(|k| 40.0 * k as f64) {
+                        let first = point(1000.0, -200.0, -s)
+                            .with_moment("p", e1 * 1000.0)
+                            .unwrap();
+                        let second = point(p2, 200.0, s).with_moment("p", e2 * p2).unwrap();
+                        let cycle = Cycle::new(first, second);
+                        match analyse(&c, &cycle, &options) {
+                            Ok(state) if state.regime == Regime::PartialSlip => {
+                                validity::sample_slip_growth(&c, &cycle, 64, &options)
+                                    .unwrap_or_else(|e| {
+                                        panic!("{shape}, f {f}, P2 {p2}, centroids {e1}, {e2}, sigma ±{s}: accepted, but sampling finds {e}")
+                                    });
+                                sampled += 1;
+                            }
+                            Err(Error::SlipReversesInHalf { .. })
+                            | Err(Error::StickZoneOutsideContact { .. }) => rejected += 1,
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            sampled >= 10 && rejected >= 5,
+            "{shape}: the grid must straddle the boundary: {sampled} sampled, {rejected} rejected"
+        );
+    }
+}
+
+#[test]
+fn start_of_half_speeds_under_a_moment_are_the_edge_coefficients() {
+    // At the start of a half the right stick boundary moves at (f dP_right - dS_right)/(f K_N
+    // pi sqrt(2a)) (docs/validity.md, "Under a moment"): checked against a finite difference of
+    // the solved partial-path zone, a step t = 1e-6 into the rising half of an asymmetric punch
+    // under a changing moment. The zone at t is the stick-zone equations for the segment from
+    // point 1 with the mean rotation of point 1's and the current contact; first order in t, so
+    // 1e-4 relative (the second-order term over the rate, about t/t_curvature).
+    let c = contact(Profile::flat_rounded_asymmetric(0.3, 25.0, 70.0).unwrap());
+    let (p1, p2) = (
+        point(1000.0, -250.0, -20.0).with_moment("p", 50.0).unwrap(),
+        point(1400.0, 250.0, 20.0).with_moment("p", 160.0).unwrap(),
+    );
+    let start = c.contact_at(&p1).unwrap();
+    let t = 1e-6;
+    let x = p1.lerp(&p2, t);
+    let now = c.contact_at(&x).unwrap();
+    let segment = Segment::between(&p1, &x, 0.5 * (start.rotation() + now.rotation()));
+    let (zone, _) = stick_zone(&c, &segment, None, &SteadyOptions::default()).unwrap();
+    let finite = PerEdge {
+        left: (start.end(Edge::Left) - zone.left) / t,
+        right: (zone.right - start.end(Edge::Right)) / t,
+    };
+    let (d_p, d_m) = (400.0, 110.0);
+    let d_edge = start.edge_load_changes(d_p, d_m);
+    let a = start.half_width();
+    // dS over the rising half: dQ -/+ pi a dsigma/4 with the paper's dsigma = sigma1 - sigma2.
+    let d_s = PerEdge {
+        left: 500.0 - PI * a * (-40.0) / 4.0,
+        right: 500.0 + PI * a * (-40.0) / 4.0,
+    };
+    for edge in Edge::BOTH {
+        let f = 0.6;
+        let speed = (f * d_edge[edge] - d_s[edge])
+            / (f * start.normal_intensity(edge) * PI * (2.0 * a).sqrt());
+        assert!(
+            (finite[edge] - speed).abs() <= 1e-4 * speed.abs(),
+            "{edge:?}: finite difference {} against {speed}",
+            finite[edge]
         );
     }
 }

@@ -33,10 +33,12 @@ mod edge;
 mod far;
 mod fast;
 mod marched;
+mod shared;
 mod strip;
 mod traction;
 
 pub use marched::{marched, MarchedTraction};
+pub use shared::fields;
 pub use traction::{Traction, MAX_NODES};
 
 use crate::error::{physical, Error, Result, MAGNITUDE_LIMIT};

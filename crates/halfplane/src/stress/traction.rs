@@ -7,7 +7,7 @@
 //! `strip.rs` sum; it is built once here from whichever description the caller has.
 
 use super::edge::SqrtEdge;
-use crate::error::{physical, Error, Result};
+use crate::error::{lazily_named, physical, Error, Result};
 use crate::labels::{Edge, PerEdge};
 use crate::march::Fields;
 
@@ -287,7 +287,7 @@ fn check_nodes(field: &str, x: &[f64], min: usize) -> Result<()> {
         });
     }
     for (i, v) in x.iter().enumerate() {
-        physical(&format!("{field}[{i}]"), *v)?;
+        lazily_named(physical, *v, || format!("{field}[{i}]"))?;
         if i > 0 && *v <= x[i - 1] {
             return Err(Error::InvalidInput {
                 field: format!("{field}[{i}]"),
@@ -314,7 +314,7 @@ fn check_values(field: &str, v: &[f64], len: usize, per: &'static str) -> Result
         });
     }
     for (i, v) in v.iter().enumerate() {
-        physical(&format!("{field}[{i}]"), *v)?;
+        lazily_named(physical, *v, || format!("{field}[{i}]"))?;
     }
     Ok(())
 }

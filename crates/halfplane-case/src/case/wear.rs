@@ -1,0 +1,156 @@
+//! The `[wear]` section (`docs/wear.md`): the wear law and its coefficient, the pad's share of
+//! the depth, the physical cycles and their checkpoints, the bound on a jump's depth and the
+//! grid's width. Every error names the field, the value and what is valid.
+
+use super::count::{count_in, RawCount};
+use anyhow::{anyhow, bail, Result};
+use halfplane::wear::{Law, WearOptions, MAX_CHECKPOINTS, MAX_CYCLES};
+use toml::Value;
+
+/// The grid's width over the unworn contact's, by default: room for a partial-slip contact
+/// that grows a little and for the first widening of a sliding scar (a long sliding run needs
+/// more: `span`).
+pub const DEFAULT_SPAN: f64 = 2.0;
+
+/// `[wear]` resolved: the options and the grid's span factor.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WearSettings {
+    /// The wear options.
+    pub options: WearOptions,
+    /// The grid's width over the unworn contact's.
+    pub span: f64,
+}
+
+/// Resolves `[wear]` (required by `halfplane wear`).
+pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
+    let table = table.ok_or_else(|| {
+        anyhow!("missing section [wear]: give law = \"archard\" or \"energy\", coefficient (1/stress) and cycles")
+    })?;
+    const FIELDS: [&str; 7] = [
+        "law",
+        "coefficient",
+        "share",
+        "cycles",
+        "checkpoints",
+        "max_depth_increment",
+        "span",
+    ];
+    if let Some(k) = table.keys().find(|k| !FIELDS.contains(&k.as_str())) {
+        bail!("unknown field wear.{k}: [wear] takes {}", FIELDS.join(", "));
+    }
+    let law = match table.get("law") {
+        Some(Value::String(s)) if s == "archard" => Law::Archard,
+        Some(Value::String(s)) if s == "energy" => Law::Energy,
+        Some(v) => bail!("invalid wear.law = {v}: must be \"archard\" (depth = k p |slip|) or \"energy\" (depth = alpha q slip, the dissipated energy)"),
+        None => bail!("missing field wear.law: give \"archard\" or \"energy\""),
+    };
+    let coefficient = number(table, "coefficient")?.ok_or_else(|| {
+        anyhow!("missing field wear.coefficient: give k (archard) or alpha (energy) > 0, in 1/stress (1/MPa with N, mm, MPa)")
+    })?;
+    let cycles = match table.get("cycles") {
+        Some(v) => count(v, "wear.cycles", 1, MAX_CYCLES)?,
+        None => bail!("missing field wear.cycles: give the physical cycles, 1 to {MAX_CYCLES}"),
+    };
+    let mut options = match table.get("checkpoints") {
+        None => WearOptions::logarithmic(law, coefficient, cycles, 7)?,
+        Some(Value::Array(list)) => {
+            let points = list
+                .iter()
+                .enumerate()
+                .map(|(i, v)| count(v, &format!("wear.checkpoints[{i}]"), 1, cycles))
+                .collect::<Result<Vec<u64>>>()?;
+            WearOptions::new(law, coefficient, cycles, &points)?
+        }
+        Some(v) => {
+            let n = count(v, "wear.checkpoints", 1, MAX_CHECKPOINTS as u64)?;
+            WearOptions::logarithmic(law, coefficient, cycles, n as usize)?
+        }
+    };
+    if let Some(share) = number(table, "share")? {
+        options = options.with_share(share)?;
+    }
+    if let Some(bound) = number(table, "max_depth_increment")? {
+        options = options.with_max_depth_increment(bound)?;
+    }
+    let span = number(table, "span")?.unwrap_or(DEFAULT_SPAN);
+    if !(span.is_finite() && (1.0..=100.0).contains(&span)) {
+        bail!("invalid wear.span = {span}: must be a factor from 1 to 100 (the grid's width over the unworn contact's)");
+    }
+    Ok(WearSettings { options, span })
+}
+
+/// A number field (integers read as numbers), or the error naming it.
+fn number(table: &toml::Table, key: &str) -> Result<Option<f64>> {
+    match table.get(key) {
+        None => Ok(None),
+        Some(Value::Float(f)) => Ok(Some(*f)),
+        Some(Value::Integer(i)) => Ok(Some(*i as f64)),
+        Some(v) => bail!("invalid wear.{key} = {v}: must be a number"),
+    }
+}
+
+/// A whole number from `min` to `max`, or the error naming `field`.
+fn count(value: &Value, field: &str, min: u64, max: u64) -> Result<u64> {
+    let raw = match value {
+        Value::Integer(i) => RawCount::Integer(*i as i128),
+        Value::Float(f) => RawCount::Float(*f),
+        other => RawCount::Other(other.to_string()),
+    };
+    // count_in works in usize; the cycle counts fit (MAX_CYCLES < 2^53 <= usize::MAX on 64 bits).
+    let n = count_in(&raw, field, min as usize, max as usize)?;
+    Ok(n as u64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<WearSettings> {
+        let table: toml::Table = toml::from_str(text).unwrap();
+        resolve(Some(&table))
+    }
+
+    #[test]
+    fn fields_are_read_and_bad_ones_named() {
+        let s = parse("law = \"energy\"\ncoefficient = 1e-8\ncycles = 1000\ncheckpoints = [1, 10]\nshare = 0.3\nmax_depth_increment = 0.05").unwrap();
+        assert_eq!(s.options.checkpoints(), &[1, 10, 1000]);
+        assert_eq!(s.options.share(), 0.3);
+        assert_eq!(s.span, DEFAULT_SPAN);
+        let s = parse("law = \"archard\"\ncoefficient = 1e-8\ncycles = 1000000\ncheckpoints = 4")
+            .unwrap();
+        assert_eq!(s.options.checkpoints(), &[1, 100, 10_000, 1_000_000]);
+        for (text, field) in [
+            (
+                "law = \"oops\"\ncoefficient = 1e-8\ncycles = 10",
+                "wear.law",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = -1.0\ncycles = 10",
+                "wear.coefficient",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 0",
+                "wear.cycles",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\nshare = 2.0",
+                "wear.share",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\ncheckpoints = [5, 3]",
+                "wear.checkpoints[1]",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\nspan = 0.5",
+                "wear.span",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\ncycle = 3",
+                "wear.cycle",
+            ),
+        ] {
+            let e = format!("{:#}", parse(text).unwrap_err());
+            assert!(e.contains(field), "{text}: {e}");
+        }
+    }
+}

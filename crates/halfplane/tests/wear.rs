@@ -1,0 +1,151 @@
+//! Fretting wear (docs/wear.md) against what is known exactly: no wear where the surfaces stick,
+//! the energy law as Archard's over f, the first cycle's dissipation as the plain march's, and
+//! the gross-sliding scar of a cylinder tending to the rigid one (the pressure to uniform).
+
+use halfplane::closed_form;
+use halfplane::history::{History, Ramp};
+use halfplane::march::{self, MarchOptions, Worn};
+use halfplane::wear::{self, Law, WearOptions, WearResult};
+use halfplane::{reference, LoadPoint};
+
+const P: f64 = 1000.0;
+const Q: f64 = 300.0;
+
+fn fretting() -> History {
+    let a = LoadPoint::new("a", P, -Q, 0.0).unwrap();
+    let b = LoadPoint::new("b", P, Q, 0.0).unwrap();
+    History::in_phase(a, b, 1, 20, Ramp::NormalFirst, 10).unwrap()
+}
+
+fn partial_slip(law: Law, coefficient: f64, cells: usize) -> WearResult {
+    let options = MarchOptions::default().with_cells(cells).unwrap();
+    let mut worn = Worn::new(&reference::hertz(), &fretting(), &options, 2.0).unwrap();
+    let wear = WearOptions::logarithmic(law, coefficient, 1_000_000, 7).unwrap();
+    wear::run(&mut worn, &wear, |_| {}).unwrap()
+}
+
+#[test]
+fn the_stick_zone_never_wears_and_the_contact_shrinks_onto_it() {
+    let r = partial_slip(Law::Archard, 1e-7, 400);
+    let contact = reference::hertz();
+    let a = closed_form::hertz_half_width(contact.compliance().value(), reference::RADIUS, P);
+    let c = closed_form::cattaneo_mindlin_stick_half_width(a, reference::FRICTION, P, Q);
+    for cp in &r.checkpoints {
+        let f = &cp.fields;
+        let w = f.x[1] - f.x[0];
+        let zone = cp.stick.unwrap();
+        // The stick zone is Cattaneo's while the annuli wear: located to its cell.
+        assert!(
+            (zone[0] + c).abs() < w && (zone[1] - c).abs() < w,
+            "cycle {}: stick zone {zone:?}, Cattaneo-Mindlin +-{c}",
+            cp.cycle
+        );
+        for (x, d) in f.x.iter().zip(&f.depth) {
+            if x.abs() < c - w {
+                assert_eq!(
+                    *d, 0.0,
+                    "cycle {}: wear at x = {x} inside the stick zone",
+                    cp.cycle
+                );
+            }
+        }
+    }
+    // Worn out of contact, the annuli stop slipping: the stick zone carries the load alone and
+    // nothing more is dissipated (q/p at its punch-like edges is Q/P < f).
+    let last = r.checkpoints.last().unwrap();
+    assert_eq!(
+        last.energy_per_cycle, 0.0,
+        "still dissipating after 1e6 cycles"
+    );
+    assert_eq!(
+        Some(last.contact),
+        last.stick,
+        "the final contact is the stick zone"
+    );
+    // 1e6 cycles in few marches: the jumps stop when the annuli stop wearing.
+    assert!(
+        r.simulated_cycles < 100,
+        "{} cycles marched",
+        r.simulated_cycles
+    );
+}
+
+#[test]
+fn the_energy_law_is_archards_over_the_friction_coefficient() {
+    // dh = alpha f p |ds| is Archard's k p |ds| with k = alpha f: the same depths to rounding
+    // (1e-12 of the largest: the two multiply the same sums in a different order).
+    let alpha = 2e-7;
+    let energy = partial_slip(Law::Energy, alpha, 200);
+    let archard = partial_slip(Law::Archard, alpha * reference::FRICTION, 200);
+    for (e, a) in energy.checkpoints.iter().zip(&archard.checkpoints) {
+        let scale = e.max_depth.max(f64::MIN_POSITIVE);
+        for (de, da) in e.fields.depth.iter().zip(&a.fields.depth) {
+            assert!(
+                (de - da).abs() <= 1e-12 * scale,
+                "cycle {}: {de} vs {da}",
+                e.cycle
+            );
+        }
+        // The energy law's volume is alpha times the dissipated energy, jumps included.
+        let v = alpha * e.dissipated_energy;
+        assert!((e.wear_volume - v).abs() <= 1e-12 * v, "cycle {}", e.cycle);
+    }
+}
+
+#[test]
+fn the_first_cycle_dissipates_what_the_plain_march_does() {
+    // Cycle 1 over the unworn gap: the grid's normal problem (gap.rs) in place of the profile's
+    // closed form. The energy per cycle agrees to 0.1%: it is carried by the slip annuli, where
+    // the grid's pressure is within 1e-5 p0 of Hertz; the last cell at each edge (1.4%) carries
+    // little of it.
+    let cells = 400;
+    let options = MarchOptions::default().with_cells(cells).unwrap();
+    let r = partial_slip(Law::Archard, 1e-9, cells);
+    let plain = march::march(&reference::hertz(), &fretting(), &options, |_, _| {}).unwrap();
+    let (worn, exact) = (r.checkpoints[0].energy_per_cycle, plain.cycles[0].energy);
+    assert!(
+        (worn - exact).abs() < 1e-3 * exact,
+        "worn march {worn}, march {exact}"
+    );
+}
+
+#[test]
+fn a_sliding_cylinder_wears_a_scar_tending_to_the_rigid_one() {
+    // Gross sliding of the Hertz cylinder, Archard: every contact cell slips the same distance,
+    // so wear goes on until it is uniform, the pressure uniform, and the worn cylinder meets the
+    // counterface on a flat of half-width a with V = 2 a^3 / (3 R) (the rigid scar). The elastic
+    // part of the contact shrinks in proportion as the scar grows: within 3% of the rigid
+    // half-width once the depth is ten times the elastic approach.
+    let contact = reference::hertz();
+    let options = MarchOptions::default().with_cells(400).unwrap();
+    let load = LoadPoint::new("load", P, 0.0, 0.0).unwrap();
+    let mut worn = Worn::sliding(&contact, load, 0.01, 10, 10, &options, 8.0).unwrap();
+    let wear = WearOptions::logarithmic(Law::Archard, 1e-7, 100_000, 6).unwrap();
+    let r = wear::run(&mut worn, &wear, |_| {}).unwrap();
+    let mut before = f64::INFINITY;
+    for cp in &r.checkpoints {
+        assert!(
+            cp.stick.is_none(),
+            "cycle {}: gross sliding has no stick zone",
+            cp.cycle
+        );
+        let rigid = (1.5 * cp.wear_volume * reference::RADIUS).cbrt();
+        let ratio = 0.5 * (cp.contact[1] - cp.contact[0]) / rigid;
+        assert!(
+            ratio < before,
+            "cycle {}: contact over rigid scar {ratio}, before {before}",
+            cp.cycle
+        );
+        before = ratio;
+    }
+    let last = r.checkpoints.last().unwrap();
+    assert!(
+        last.max_depth > 10.0 * r.elastic_approach,
+        "depth {}",
+        last.max_depth
+    );
+    assert!(
+        (before - 1.0).abs() < 0.03,
+        "contact over rigid scar {before} after 1e5 cycles"
+    );
+}
