@@ -11,7 +11,8 @@ The same analyses as the ``halfplane`` command, with the same numbers:
 - :func:`stress` (``stress``: the stresses below the contact at an increment) and :func:`fatigue`
   (``fatigue``: initiation parameters over the steady cycle); :func:`crack` (``crack``: will a
   crack grow or arrest); :func:`match` (``match``: the test that reproduces a prototype's
-  contact-edge state);
+  contact-edge state); :func:`wear` (``wear``: fretting wear over millions of cycles, its
+  checkpoints as a DataFrame);
 - :func:`steady_batch`: a million cases in one call on every core; :mod:`halfplane.dask` on a
   cluster.
 
@@ -49,6 +50,7 @@ from ._results import (
     StickZone,
 )
 from ._subsurface import FatigueResult, StressResult, fatigue, stress
+from ._wear import WearResult, wear
 from .errors import (
     HalfplaneError,
     HalfplaneWarning,
@@ -183,6 +185,7 @@ __all__ = [
     "StickZone",
     "StressResult",
     "Units",
+    "WearResult",
     "crack",
     "evolve",
     "fatigue",
@@ -192,6 +195,7 @@ __all__ = [
     "steady",
     "steady_batch",
     "stress",
+    "wear",
 ]
 
 # The result classes and their parts are known by their public path (halfplane.StickZone, not

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-import numbers
 from dataclasses import dataclass
 from typing import Any, ClassVar, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -11,7 +9,7 @@ import pandas as pd
 
 from . import _halfplane
 from ._halfplane import Case
-from ._records import Record, Units, _frame, _html_table, _num, _plain
+from ._records import Record, Units, _cells, _frame, _html_table, _num, _overrides, _plain
 from .errors import InputError
 
 #: The ``crack --csv`` columns, in order (public names fixed by the issue that added them).
@@ -153,28 +151,20 @@ def crack(
     ``[history]``, ``[crack]`` lengths or the ``[fatigue]`` constants ``threshold`` and
     ``endurance_range``). The GIL is released while computing.
     """
-    if cells is not None:
-        if isinstance(cells, bool) or not isinstance(cells, numbers.Integral) or cells < 0:
-            raise InputError(f"invalid cells = {cells!r}: must be a whole number")
-        cells = int(cells)
-    given: Dict[str, Any] = {
-        "position": position,
-        "angle": angle,
-        "face_friction": face_friction,
-        "points": points,
-        "effective_range": effective_range,
-        "initiation_parameter": initiation_parameter,
-    }
-    overrides: Dict[str, Any] = {}
-    for key, value in given.items():
-        if value is None:
-            continue
-        if isinstance(value, float) and not math.isfinite(value):
-            raise InputError(f"invalid crack.{key} = {value}: must be a finite number")
-        overrides[key] = value
+    overrides = _overrides(
+        "crack",
+        {
+            "position": position,
+            "angle": angle,
+            "face_friction": face_friction,
+            "points": points,
+            "effective_range": effective_range,
+            "initiation_parameter": initiation_parameter,
+        },
+    )
     if lengths is not None:
         overrides["lengths"] = _lengths(lengths)
-    report = _halfplane.crack_report(case, cells, overrides or None)
+    report = _halfplane.crack_report(case, _cells(cells), overrides or None)
     return CrackResult._from(report)
 
 

@@ -26,6 +26,7 @@ __all__ = [
     "steady_batch_columns",
     "steady_report",
     "stress_points",
+    "wear_report",
 ]
 
 REGIMES: List[str]
@@ -131,3 +132,6 @@ def match_report(
     exact: bool = False,
     edge: Optional[str] = None,
 ) -> Tuple[Dict[str, Any], Case, str, List[str]]: ...
+def wear_report(
+    case: Case, cells: Optional[int] = None, overrides: Optional[Mapping[str, Any]] = None
+) -> Tuple[Dict[str, Any], Optional[BaseException]]: ...

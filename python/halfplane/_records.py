@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 from dataclasses import dataclass
 from html import escape
 from typing import (
@@ -32,6 +33,8 @@ from typing import (
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
+
+from .errors import InputError
 
 T = TypeVar("T")
 U = TypeVar("U")
@@ -251,6 +254,29 @@ def _html_table(caption: str, rows: Sequence[Sequence[str]], header: Sequence[st
         out.append("<tr>" + "".join(cells) + "</tr>")
     out.append("</table>")
     return "\n".join(out)
+
+
+def _cells(value: Optional[int]) -> Optional[int]:
+    """The ``cells`` keyword as the native module takes it: None, or a whole number >= 0 (the
+    solver's own check names the valid range)."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0:
+        raise InputError(f"invalid cells = {value!r}: must be a whole number")
+    return int(value)
+
+
+def _overrides(section: str, given: Mapping[str, Any]) -> Dict[str, Any]:
+    """The fields of ``[section]`` given as keywords (those not None), for the native module to
+    put into the case's section; a float that is not finite is refused naming the field."""
+    out: Dict[str, Any] = {}
+    for key, value in given.items():
+        if value is None:
+            continue
+        if isinstance(value, float) and not math.isfinite(value):
+            raise InputError(f"invalid {section}.{key} = {value}: must be a finite number")
+        out[key] = value
+    return out
 
 
 def _frame(columns: Mapping[str, Any], dtypes: Optional[Mapping[str, str]] = None) -> pd.DataFrame:

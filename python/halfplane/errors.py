@@ -12,13 +12,19 @@ None for case-file checks. The class is the library's kind of the error: bad inp
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
+
+if TYPE_CHECKING:
+    from ._wear import WearResult
 
 
 class HalfplaneError(Exception):
-    """Base class of the errors :mod:`halfplane` raises."""
+    """Base class of the errors :mod:`halfplane` raises. ``result`` holds what a run that
+    stopped part way reached before the error (:func:`halfplane.wear`'s checkpoints, as the
+    command prints them before its error), else None."""
 
     variant: Optional[str] = None
+    result: Optional[WearResult] = None
 
 
 class InputError(HalfplaneError, ValueError):

@@ -48,7 +48,7 @@ def read_csv(text):
 
 
 #: Columns of whole numbers (counts, indices); every other numeric column is float64.
-INTEGER_COLUMNS = {"half", "step", "passes", "index"}
+INTEGER_COLUMNS = {"half", "step", "passes", "index", "cycle"}
 
 
 def assert_table_equals_the_csv(frame, text):

@@ -343,6 +343,25 @@ def test_design_map_of_regimes_and_of_scattered_rows(design):
     assert np.array_equal(points.get_offsets(), scattered[["shear2", "normal2"]].to_numpy())
 
 
+def test_design_map_of_crack_verdicts(design):
+    # A crack sweep's verdict column (analysis = "crack") is drawn as categories, like the CLI's
+    # --color crack.verdict; a failed row (its error column set) is grey, "no value".
+    frame, shears, normals = design
+    verdicts = np.where(frame.shear2 < 200.0, "no-growth",
+                        np.where(frame.shear2 < 400.0, "arrests", "propagates"))
+    error = np.where((frame.shear2 == 600.0) & (frame.normal2 == 1000.0), "failed", "")
+    cracked = frame.assign(**{"crack.verdict": verdicts, "error": error})
+    ax = plot.design_map(cracked, "shear2", "normal2", "crack.verdict")
+    mesh = next(c for c in ax.collections if isinstance(c, QuadMesh))
+    names = ["no-growth", "arrests", "propagates", ""]
+    shown = np.where(error != "", "", verdicts)
+    codes = np.array([names.index(v) for v in shown]).reshape(len(normals), len(shears))
+    assert np.array_equal(np.asarray(mesh.get_array()).reshape(codes.shape), codes)
+    legend = sorted(t.get_text() for t in ax.get_legend().get_texts())
+    assert legend == ["arrests", "no value", "no-growth", "propagates"]
+    assert ax.get_title() == "crack verdict"
+
+
 def test_design_map_asks_for_where_when_more_columns_vary(design):
     frame, _, _ = design
     both = pd.concat([frame, frame.assign(friction=0.3)], ignore_index=True)
@@ -354,7 +373,7 @@ def test_design_map_asks_for_where_when_more_columns_vary(design):
         plot.design_map(both, "shear2", "normal2", where={"friction": 0.5})
     with pytest.raises(ValueError, match="lacks column.*'cycle.point2.shear'"):
         plot.design_map(both, "cycle.point2.shear", "normal2")
-    with pytest.raises(ValueError, match="invalid color 'error'"):
+    with pytest.raises(ValueError, match="invalid color 'error': it must be 'regime', 'crack.verdict'"):
         plot.design_map(frame, "shear2", "normal2", "error")
 
 

@@ -282,7 +282,10 @@ def test_mypy_strict_sees_the_attribute_types(tmp_path):
         "ratio: float = r.criteria.shear_ratio_1\n"
         "slip = r.slip_zones.left.at_point1 if r.slip_zones is not None else 0.0\n"
         "m = halfplane.march(halfplane.read_case('case.toml'))\n"
-        "n: int = m.cells + m.increments\n",
+        "n: int = m.cells + m.increments\n"
+        "w = halfplane.wear(halfplane.read_case('case.toml'))\n"
+        "k: int = w.cells + w.cycles + w.depth.shape[0]\n"
+        "marched = w.simulated_cycles if w.simulated_cycles is not None else 0\n",
     )
     assert good.returncode == 0, good.stdout + good.stderr
     bad = mypy(

@@ -9,8 +9,10 @@
 // change or duplicate the help.
 #![allow(missing_docs)]
 
+use clap::builder::PossibleValuesParser;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use halfplane_case::matching::TestOptions;
+use halfplane_case::report::wear::WearRow;
 use std::path::PathBuf;
 
 /// Frictional half-plane contact: steady-state stick zones, slip zones and their evolution.
@@ -164,6 +166,10 @@ pub struct WearArgs {
     /// Cells across the grid (overrides [solver] cells; default 400).
     #[arg(long)]
     pub cells: Option<usize>,
+    /// Evaluate the case's [fatigue] parameters over each checkpoint's cycle (on the grid of
+    /// the unworn contact): each one's maximum, where, and its critical-distance values.
+    #[arg(long)]
+    pub fatigue: bool,
 }
 
 #[derive(Args, Debug)]
@@ -279,6 +285,9 @@ pub enum PlotCommand {
     /// A crack's stress intensity ranges against its length with the short-crack threshold
     /// (log-log), beside the sxx map with the crack drawn (needs what `halfplane crack` needs).
     Crack(SurfaceProfilesArgs),
+    /// The wear run of [wear] (as `halfplane wear`): wear depth and pressure along x at each
+    /// checkpoint, beside a checkpoint quantity (--quantity) against cycles on a log axis.
+    Wear(WearFigureArgs),
     /// A sweep's output over two varied paths: a regime map (--color regime, the default) or a
     /// filled-contour map of any numeric column with a colour bar (takes the sweep's output, not a
     /// case).
@@ -419,6 +428,31 @@ pub struct MarchFieldsArgs {
     /// Cells (overrides [solver] cells).
     #[arg(long)]
     pub cells: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct WearFigureArgs {
+    #[command(flatten)]
+    pub figure: FigureArgs,
+    /// The checkpoint quantity drawn against cycles: a column of `halfplane wear --format csv`.
+    #[arg(long, default_value = "max_depth", value_parser = wear_quantities())]
+    pub quantity: String,
+    /// Cells across the grid (overrides [solver] cells; default 400).
+    #[arg(long)]
+    pub cells: Option<usize>,
+}
+
+/// The names `plot wear --quantity` takes: the checkpoint columns of the `wear` report, the cycle
+/// (the figure's x) apart.
+pub fn wear_quantity_names() -> impl Iterator<Item = &'static str> {
+    WearRow::COLUMNS
+        .iter()
+        .map(|c| c.key)
+        .filter(|k| *k != "cycle")
+}
+
+fn wear_quantities() -> PossibleValuesParser {
+    PossibleValuesParser::new(wear_quantity_names())
 }
 
 #[derive(Args, Debug)]

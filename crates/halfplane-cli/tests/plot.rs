@@ -213,3 +213,91 @@ fn the_crack_figure_draws_the_ranges_the_threshold_and_the_crack() {
     let o = run(&["plot", "crack", &hertz, "-o", path.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn the_wear_figure_draws_the_checkpoints_and_the_chosen_quantity() {
+    // The partial-slip example on a coarse grid (100 cells, to keep the test quick): three
+    // panels side by side, the width of three 640-pixel panels.
+    let scratch = Scratch::new("wear");
+    let case = example("wear-partial-slip.toml");
+    let png = scratch.out("wear.png");
+    let png = png.to_str().unwrap();
+    let o = run(&["plot", "wear", &case, "-o", png, "--cells", "100"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let bytes = std::fs::read(png).unwrap();
+    let (width, height) = png_size(&bytes);
+    assert_eq!(width, 1920);
+    assert!((400..1000).contains(&height), "height {height}");
+    assert!(
+        bytes.len() > 50_000,
+        "{} bytes: too few for three panels",
+        bytes.len()
+    );
+    // One curve per checkpoint (1 to 1e6, seven), the stick zone on the pressure, the chosen
+    // column with its unit against cycles on a log axis (ticks 1, 10, ..., 1000000).
+    let svg = scratch.out("wear.svg");
+    let svg = svg.to_str().unwrap();
+    let o = run(&[
+        "plot",
+        "wear",
+        &case,
+        "-o",
+        svg,
+        "--cells",
+        "100",
+        "--quantity",
+        "peak_pressure",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(svg).unwrap();
+    for n in [
+        "cycle 1\n",
+        "cycle 1000\n",
+        "cycle 1000000\n",
+        "stick zone |x| ≤ ",
+        "wear depth, both bodies",
+        "depth h (mm)",
+        "pressure p (MPa)",
+        "peak_pressure at the checkpoints",
+        "peak_pressure (MPa)",
+        "\n10\n",
+        "\n100000\n",
+        "\n1000000\n",
+    ] {
+        assert!(text.contains(n), "{n:?} not in the SVG");
+    }
+    // A quantity that is not a checkpoint column: exit 2, naming the option and the columns.
+    let o = run(&["plot", "wear", &case, "-o", svg, "--quantity", "depth"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    for n in [
+        "--quantity",
+        "'depth'",
+        "wear_volume",
+        "max_depth",
+        "energy_per_cycle",
+        "dissipated_energy",
+        "contact_left",
+        "peak_pressure",
+        "stick_right",
+        "slip_amplitude_max",
+    ] {
+        assert!(err.contains(n), "error does not mention {n:?}: {err}");
+    }
+    // Gross sliding has no stick zone: refused before the run, naming what can be drawn.
+    let sliding = example("wear-sliding.toml");
+    let o = run(&[
+        "plot",
+        "wear",
+        &sliding,
+        "-o",
+        svg,
+        "--quantity",
+        "stick_left",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    for n in ["--quantity stick_left", "no stick zone", "max_depth"] {
+        assert!(err.contains(n), "error does not mention {n:?}: {err}");
+    }
+}

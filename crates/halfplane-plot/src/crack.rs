@@ -4,7 +4,7 @@
 use crate::contour::GridMap;
 use crate::fields::stress_map_figure;
 use crate::format::number;
-use crate::{Figure, Legend, Panel, PlotError, Series, Style, Units};
+use crate::{Figure, Legend, LogAxes, Panel, PlotError, Series, Style, Units};
 use halfplane::crack::CrackResult;
 
 /// The palette colour of the crack on the map (black, as the contact: it reads on every band).
@@ -54,7 +54,7 @@ pub fn crack_growth_panel(result: &CrackResult, units: &Units) -> Panel {
         format!("stress intensity range ΔK ({k})"),
         series,
     );
-    panel.log_axes = true;
+    panel.log_axes = LogAxes::Both;
     panel.legend = Legend::Below;
     panel
 }

@@ -6,7 +6,7 @@
 use crate::contour::GridMap;
 use crate::format::number;
 use crate::shading::{filled_map, Shading};
-use crate::{ColorBar, Figure, Legend, Panel, PlotError, Series, Style, Units};
+use crate::{ColorBar, Figure, Legend, LogAxes, Panel, PlotError, Series, Style, Units};
 use halfplane::fatigue::{FatigueResult, Parameter};
 
 /// The palette colour of the marked maximum (black, with a white ring: it reads on every band).
@@ -123,7 +123,7 @@ pub fn stress_map_figure(
             legend: Legend::Below,
             color_bar: Some(bar),
             equal_aspect: true,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: format!("{name} (tension positive)"),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
@@ -209,7 +209,7 @@ pub fn fatigue_map_figure(
             legend: Legend::Below,
             color_bar: Some(bar),
             equal_aspect: true,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: format!("{name} ({})", parameter.name()),
             x_label: format!("position x ({})", units.length),
             y_label: depth_label(units),
@@ -274,7 +274,7 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
-                log_axes: false,
+                log_axes: LogAxes::Neither,
                 title: "surface σxx(x, 0)".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("σxx ({})", units.stress),
@@ -284,7 +284,7 @@ pub fn surface_profiles_figure(result: &FatigueResult, units: &Units) -> Figure 
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
-                log_axes: false,
+                log_axes: LogAxes::Neither,
                 title: "Ruiz F2 (δ the slip amplitude)".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("F2 ({f2_unit})"),

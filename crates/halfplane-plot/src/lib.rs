@@ -2,7 +2,9 @@
 //! slip-zone-map (Figure 5) and stick-zone-evolution (Figure 6) plots, the marching solver's
 //! fields and zones, filled maps of the stresses and fatigue parameters below the contact with
 //! the surface profiles of the cycle, a crack's stress intensity ranges against its length
-//! ([`crack_figure`]), and design maps of a sweep's rows ([`design_map_figure`]).
+//! ([`crack_figure`]), design maps of a sweep's rows ([`design_map_figure`]), and a wear run's
+//! depth and pressure at its checkpoints with a checkpoint quantity against cycles
+//! ([`wear_figure`]).
 //! SVG or PNG by file name, rendered in pure Rust with a bundled font. Maps are filled contours
 //! with a colour bar ([`ColorBar`]), numbers in plain notation ([`number`]).
 //!
@@ -20,6 +22,7 @@ mod map;
 mod matching;
 mod render;
 mod shading;
+mod wear;
 
 pub use contour::{contour_segments, filled_contours, levels, FilledContours, GridMap};
 pub use crack::{crack_figure, crack_growth_panel};
@@ -28,8 +31,11 @@ pub use format::{level_labels, number};
 pub use map::{design_map_figure, DesignMap, MapColor};
 pub use matching::match_figure;
 pub use shading::{diverging, sequential};
+pub use wear::{wear_figure, CheckpointQuantity, MAX_PROFILES};
 
-pub use render::{palette, render_svg, write, ColorBar, Figure, Legend, Panel, Series, Style};
+pub use render::{
+    palette, render_svg, write, ColorBar, Figure, Legend, LogAxes, Panel, Series, Style,
+};
 
 pub use halfplane::record::{FieldRecorder, MarchedCycle, StepFields};
 pub use halfplane::slip_map::SlipMap;
@@ -152,7 +158,7 @@ pub fn load_space_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: "P–Q trajectory".into(),
             x_label: format!("normal load P ({force})"),
             y_label: format!("shear load Q ({force})"),
@@ -162,7 +168,7 @@ pub fn load_space_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: "P–S trajectories of the edges".into(),
             x_label: format!("normal load P ({force})"),
             y_label: format!("equivalent shear S ({force})"),
@@ -202,7 +208,7 @@ fn moment_panel(
         legend: Legend::Auto,
         color_bar: None,
         equal_aspect: false,
-        log_axes: false,
+        log_axes: LogAxes::Neither,
         title: "Moment: centroid and contact ends".into(),
         x_label: format!("normal load P ({})", units.force_per_length),
         y_label: format!("position x ({})", units.length),
@@ -248,7 +254,7 @@ pub fn slip_map_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: format!("f = {}", panel.friction),
             x_label: "ΔQ/(f P0)".into(),
             y_label: "right slip zone (min(a1, a2) − n)/a0".into(),
@@ -344,7 +350,7 @@ pub fn evolution_figure(
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: match (right, centred) {
                 (true, true) => "right edge: a and n".into(),
                 (false, true) => "left edge: −a and −m".into(),
@@ -401,7 +407,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
-                log_axes: false,
+                log_axes: LogAxes::Neither,
                 title: "shear traction".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("traction q ({})", units.stress),
@@ -411,7 +417,7 @@ pub fn march_fields_figure(fields: &[StepFields], units: &Units) -> Figure {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
-                log_axes: false,
+                log_axes: LogAxes::Neither,
                 title: "accumulated slip".into(),
                 x_label: format!("position x ({})", units.length),
                 y_label: format!("slip ({})", units.length),
@@ -450,7 +456,7 @@ pub fn march_zones_figure(result: &MarchResult, units: &Units) -> Figure {
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: "stick zones (filled); slip between them and the contact edges".into(),
             x_label: "increment".into(),
             y_label: format!("position x ({})", units.length),

@@ -9,7 +9,7 @@
 //! drawn as small squares in their band's colour, without contours.
 
 use crate::shading::{filled_map, Shading};
-use crate::{ColorBar, Figure, Legend, Panel, PlotError, Series, Style};
+use crate::{ColorBar, Figure, Legend, LogAxes, Panel, PlotError, Series, Style};
 
 /// The colour of each row: a category (a regime name) or a number (absent where the row has no
 /// value: gross sliding, or a failed case).
@@ -232,7 +232,7 @@ pub fn design_map_figure(map: &DesignMap) -> Result<Figure, PlotError> {
             legend: Legend::Below,
             color_bar,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: String::new(),
             x_label: map.x_label.clone(),
             y_label: map.y_label.clone(),

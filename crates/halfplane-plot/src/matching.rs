@@ -1,7 +1,7 @@
 //! The load spaces of a prototype and its matched test, side by side
 //! ([`halfplane::matching`]).
 
-use crate::{Figure, Legend, Panel, PlotError, Series, Style, Units};
+use crate::{Figure, Legend, LogAxes, Panel, PlotError, Series, Style, Units};
 use halfplane::asymptotic::{equivalent_shear, Edge};
 use halfplane::matching::{MatchReport, Side};
 
@@ -57,7 +57,7 @@ pub fn match_figure(report: &MatchReport, units: &Units) -> Result<Figure, PlotE
             legend: Legend::Auto,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
             title: format!("{name}: {}", kind(side)),
             x_label: format!("normal load P ({force})"),
             y_label: format!("shear Q, equivalent shear S ({force})"),

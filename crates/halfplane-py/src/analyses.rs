@@ -121,7 +121,7 @@ impl Recorded {
 
 /// How often a march takes the GIL back, between increments, to see Ctrl-C: often enough that an
 /// interrupt feels immediate, rarely enough that the check costs nothing measurable.
-const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
+pub(crate) const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
 /// One increment as a row of the `march --csv` columns, each computed as the CLI's report row
 /// computes it (`halfplane_case::report::march`): the largest stick interval (null when none) and

@@ -13,6 +13,7 @@ mod crack;
 mod errors;
 mod matching;
 mod subsurface;
+mod wear;
 
 use pyo3::prelude::*;
 
@@ -30,6 +31,7 @@ fn _halfplane(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(subsurface::fatigue_report, m)?)?;
     m.add_function(wrap_pyfunction!(crack::crack_report, m)?)?;
     m.add_function(wrap_pyfunction!(matching::match_report, m)?)?;
+    m.add_function(wrap_pyfunction!(wear::wear_report, m)?)?;
     m.add_function(wrap_pyfunction!(errors::_error_examples, m)?)?;
     m.add("REGIMES", batch::REGIMES.to_vec())?;
     m.add("STEADY_COLUMNS", halfplane::batch::STEADY_COLUMNS.to_vec())?;

@@ -343,6 +343,18 @@ _REGIME_COLOURS = {
     "gross-sliding": "#c44e52",
     "": "#bbbbbb",
 }
+# A crack sweep's verdict (``analysis = "crack"``), as ``halfplane plot design-map``.
+_VERDICT_COLOURS = {
+    "no-growth": "#55a868",
+    "arrests": "#4c72b0",
+    "propagates": "#c44e52",
+    "": "#bbbbbb",
+}
+# The text columns drawn as categories: their colours, the title and the name of rows without one.
+_CATEGORIES = {
+    "regime": (_REGIME_COLOURS, "regime", "outside the analysis"),
+    "crack.verdict": (_VERDICT_COLOURS, "crack verdict", "no value"),
+}
 
 
 def _cell_edges(centres: Floats) -> Floats:
@@ -383,15 +395,16 @@ def _select(frame: pd.DataFrame, x: str, y: str, where: Mapping[str, float]) -> 
     return rows
 
 
-def _regime_codes(rows: pd.DataFrame) -> tuple[Floats, np.ndarray]:
-    regime = rows["regime"].fillna("").astype(str).to_numpy()
+def _category_codes(rows: pd.DataFrame, column: str,
+                    colours: Mapping[str, str]) -> tuple[Floats, np.ndarray]:
+    values = rows[column].fillna("").astype(str).to_numpy()
     if "error" in rows.columns:
         failed = rows["error"].fillna("").astype(str).to_numpy() != ""
-        regime = np.where(failed, "", regime)
-    names = list(_REGIME_COLOURS)
-    codes = np.array([names.index(r) if r in names else len(names) - 1 for r in regime],
+        values = np.where(failed, "", values)
+    names = list(colours)
+    codes = np.array([names.index(r) if r in names else len(names) - 1 for r in values],
                      dtype=np.float64)
-    return codes, regime
+    return codes, values
 
 
 def design_map(
@@ -405,7 +418,8 @@ def design_map(
     ax: Axes | None = None,
 ) -> Axes:
     """A design map of many cases over two of their inputs, as ``halfplane plot design-map``:
-    the regime of each case (``color="regime"``, with rows whose analysis failed in grey) or any
+    the regime of each case (``color="regime"``, with rows whose analysis failed in grey), a
+    crack sweep's verdict (``color="crack.verdict"``: no-growth, arrests, propagates) or any
     numeric column as colour, with a colour bar, contour lines and its largest value marked.
 
     ``frame`` has one row per case with its inputs and results: a sweep's output
@@ -421,8 +435,10 @@ def design_map(
     """
     require_columns(frame, [x, y, color], "frame")
     rows = _select(frame, x, y, where or {})
-    if color != "regime" and not pd.api.types.is_numeric_dtype(rows[color]):
-        raise ValueError(f"invalid color {color!r}: it must be 'regime' or a numeric column")
+    if color not in _CATEGORIES and not pd.api.types.is_numeric_dtype(rows[color]):
+        raise ValueError(
+            f"invalid color {color!r}: it must be 'regime', 'crack.verdict' or a numeric column"
+        )
     names = unit_names(units)
     xs, ys = floats(rows, x), floats(rows, y)
     ux, uy = np.unique(xs), np.unique(ys)
@@ -431,22 +447,22 @@ def design_map(
     index = (np.searchsorted(uy, ys), np.searchsorted(ux, xs))
     ax = new_axes(ax, (7.0, 5.0))
     mpl = importlib.import_module("matplotlib")
-    if color == "regime":
-        codes, regime = _regime_codes(rows)
-        cmap = mpl.colors.ListedColormap(list(_REGIME_COLOURS.values()))
-        bounds = np.arange(len(_REGIME_COLOURS) + 1) - 0.5
-        norm = mpl.colors.BoundaryNorm(bounds, len(_REGIME_COLOURS))
+    if color in _CATEGORIES:
+        colours, title, blank = _CATEGORIES[color]
+        codes, category = _category_codes(rows, color, colours)
+        cmap = mpl.colors.ListedColormap(list(colours.values()))
+        bounds = np.arange(len(colours) + 1) - 0.5
+        norm = mpl.colors.BoundaryNorm(bounds, len(colours))
         if grid:
             cells[index] = codes
             ax.pcolormesh(_cell_edges(ux), _cell_edges(uy), cells, cmap=cmap, norm=norm)
         else:
             ax.scatter(xs, ys, c=codes, cmap=cmap, norm=norm, s=14)
         handles = [
-            mpl.patches.Patch(color=c, label=n or "outside the analysis")
-            for n, c in _REGIME_COLOURS.items() if (regime == n).any()
+            mpl.patches.Patch(color=c, label=n or blank)
+            for n, c in colours.items() if (category == n).any()
         ]
         ax.legend(handles=handles, fontsize=8, loc="best", framealpha=0.9)
-        title = "regime"
     else:
         values = floats(rows, color)
         if not np.isfinite(values).any():

@@ -254,11 +254,32 @@ impl Case {
         wear::resolve(self.wear.as_ref())
     }
 
+    /// `[wear]` with the fields of `overrides` put in (added, or replacing those written),
+    /// resolved and checked exactly as the section itself (Python's `halfplane.wear`).
+    pub fn wear_with(&self, overrides: &toml::Table) -> Result<WearSettings> {
+        let mut table = self.wear.clone().unwrap_or_default();
+        for (k, v) in overrides {
+            table.insert(k.clone(), v.clone());
+        }
+        wear::resolve(Some(&table))
+    }
+
     /// The march `halfplane wear` runs: the sliding history, or the ramp and first cycle of the
     /// load history (which must have exactly one cycle: the physical ones are `[wear] cycles`),
     /// on a grid `span` times the unworn contact with `cells` cells (`--cells`).
     pub fn worn_march(&self, span: f64, cells: Option<usize>) -> Result<halfplane::march::Worn> {
-        let options = self.solver_with_cells(cells)?;
+        self.worn_march_named(span, cells, "--cells")
+    }
+
+    /// [`Case::worn_march`] for another front end: an invalid `cells` is reported under `name`
+    /// (Python's `cells` keyword).
+    pub fn worn_march_named(
+        &self,
+        span: f64,
+        cells: Option<usize>,
+        name: &str,
+    ) -> Result<halfplane::march::Worn> {
+        let options = self.solver_with_cells_named(cells, name)?;
         if let Some(s) = &self.sliding {
             return Ok(halfplane::march::Worn::sliding(
                 &self.contact,

@@ -1,15 +1,18 @@
 //! `halfplane plot FIGURE`: one figure, each with its own options, as SVG or PNG.
 
 use crate::args::{Component, FigureArgs, MapParameter, PlotCommand};
-use crate::case::{Case, FatigueSettings};
+use crate::case::{Case, FatigueSettings, WearSettings};
 use crate::output::note;
+use crate::report::wear::WearRow;
+use crate::report::Cell;
 use anyhow::{anyhow, bail, Result};
 use halfplane::fatigue::{self, Parameter};
 use halfplane::history::History;
 use halfplane::march::{self, MarchOptions};
 use halfplane::matching::Mode;
+use halfplane::wear::Checkpoint;
 use halfplane::{stress, Contact, Cycle};
-use halfplane_plot::{FieldRecorder, GridMap, MarchedCycle, SlipMap, Units};
+use halfplane_plot::{CheckpointQuantity, FieldRecorder, GridMap, MarchedCycle, SlipMap, Units};
 use std::path::PathBuf;
 
 /// The most increments `march-fields` draws: each keeps four fields of every cell, and a figure
@@ -105,6 +108,18 @@ pub enum FigureConfig {
         constants: halfplane::fatigue::FatigueConstants,
         /// `[crack]`.
         crack: halfplane::crack::CrackOptions,
+    },
+    /// The wear run of `[wear]`: depth and pressure at the checkpoints, and a quantity of
+    /// theirs against cycles.
+    Wear {
+        /// The case, whose `[history]` (one cycle, or sliding) the run repeats.
+        case: Box<Case>,
+        /// `[wear]`.
+        settings: WearSettings,
+        /// `--cells`.
+        cells: Option<usize>,
+        /// `--quantity`: a checkpoint column of the `wear` report.
+        quantity: String,
     },
 }
 
@@ -254,6 +269,27 @@ impl PlotConfig {
                     options,
                     constants,
                     crack,
+                };
+                (&a.figure, case, figure)
+            }
+            PlotCommand::Wear(a) => {
+                let case = load(&a.figure)?;
+                let settings = case.wear()?;
+                if case.sliding.is_some() && a.quantity.starts_with("stick_") {
+                    bail!(
+                        "invalid --quantity {}: a sliding history ([history] kind = \"sliding\") has no stick zone; valid: {}",
+                        a.quantity,
+                        crate::args::wear_quantity_names()
+                            .filter(|q| !q.starts_with("stick_"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    );
+                }
+                let figure = FigureConfig::Wear {
+                    case: Box::new(case.clone()),
+                    settings,
+                    cells: a.cells,
+                    quantity: a.quantity.clone(),
                 };
                 (&a.figure, case, figure)
             }
@@ -543,5 +579,41 @@ fn figure(config: &PlotConfig) -> Result<halfplane_plot::Figure> {
             constants,
             crack,
         } => crack_figure(contact, history, options, constants, crack, units)?,
+        FigureConfig::Wear {
+            case,
+            settings,
+            cells,
+            quantity,
+        } => {
+            let mut worn = case.worn_march(settings.span, *cells)?;
+            let result = halfplane::wear::run(&mut worn, &settings.options, |_| {})?;
+            let quantity = checkpoint_quantity(&result.checkpoints, quantity, &case.units)?;
+            halfplane_plot::wear_figure(&result, &quantity, units)?
+        }
+    })
+}
+
+/// The column `name` of the `wear` report at every checkpoint, with its unit: the numbers its
+/// CSV prints (`None` where it prints nothing).
+fn checkpoint_quantity(
+    checkpoints: &[Checkpoint],
+    name: &str,
+    units: &crate::units::Units,
+) -> Result<CheckpointQuantity> {
+    let column = WearRow::COLUMNS
+        .iter()
+        .find(|c| c.key == name)
+        .ok_or_else(|| anyhow!("invalid --quantity {name}: not a column of the wear report"))?;
+    let values = checkpoints
+        .iter()
+        .map(|c| match (column.get)(&WearRow::new(c)) {
+            Cell::Num(v) => Some(v),
+            _ => None,
+        })
+        .collect();
+    Ok(CheckpointQuantity {
+        name: name.to_string(),
+        unit: units.of(column.quantity),
+        values,
     })
 }

@@ -225,16 +225,17 @@ where
         range = equal_aspect(range, plot_pixels(area.dim_in_pixel(), panel)?);
     }
     let ((x0, x1), (y0, y1)) = range;
-    let axis = |lo: f64, hi: f64| Axis {
+    let (log_x, log_y) = (panel.log_axes.x(), panel.log_axes.y());
+    let axis = |lo: f64, hi: f64, log: bool| Axis {
         linear: RangedCoordf64::from(lo..hi),
-        log: panel.log_axes,
+        log,
     };
     let mut chart = frame(area, &panel.title)
-        .build_cartesian_2d(axis(x0, x1), axis(y0, y1))
+        .build_cartesian_2d(axis(x0, x1, log_x), axis(y0, y1, log_y))
         .map_err(draw_error)?;
     let (lx, ly) = (tick_formatter(x0, x1), tick_formatter(y0, y1));
-    let fx = |v: &f64| if panel.log_axes { log_label(v) } else { lx(v) };
-    let fy = |v: &f64| if panel.log_axes { log_label(v) } else { ly(v) };
+    let fx = |v: &f64| if log_x { log_label(v) } else { lx(v) };
+    let fy = |v: &f64| if log_y { log_label(v) } else { ly(v) };
     chart
         .configure_mesh()
         .x_labels(TICKS)

@@ -88,6 +88,32 @@ pub enum Legend {
     LowerLeft,
 }
 
+/// Which of a panel's axes are logarithmic. On a logarithmic axis the series' points are given
+/// as they are and drawn at their base-10 logarithms (points not above zero are left out), with
+/// ticks at 1, 2 and 5 times the powers of ten.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LogAxes {
+    /// Both linear (default).
+    #[default]
+    Neither,
+    /// x logarithmic, y linear (a quantity against cycles).
+    X,
+    /// Both logarithmic.
+    Both,
+}
+
+impl LogAxes {
+    /// Whether x is logarithmic.
+    pub fn x(self) -> bool {
+        self != Self::Neither
+    }
+
+    /// Whether y is logarithmic.
+    pub fn y(self) -> bool {
+        self == Self::Both
+    }
+}
+
 /// One chart.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Panel {
@@ -105,10 +131,8 @@ pub struct Panel {
     pub color_bar: Option<ColorBar>,
     /// Whether a unit of x and of y are the same length on the page (a map of a cross-section).
     pub equal_aspect: bool,
-    /// Both axes logarithmic: the series' points are given as they are and drawn at their
-    /// base-10 logarithms (points not above zero are left out); ticks at 1, 2 and 5 times the
-    /// powers of ten.
-    pub log_axes: bool,
+    /// Which axes are logarithmic.
+    pub log_axes: LogAxes,
 }
 
 impl Panel {
@@ -128,7 +152,7 @@ impl Panel {
             series,
             color_bar: None,
             equal_aspect: false,
-            log_axes: false,
+            log_axes: LogAxes::Neither,
         }
     }
 }

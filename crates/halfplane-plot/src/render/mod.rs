@@ -15,7 +15,7 @@ mod legend;
 mod palette;
 mod png;
 
-pub use figure::{ColorBar, Figure, Legend, Panel, Series, Style};
+pub use figure::{ColorBar, Figure, Legend, LogAxes, Panel, Series, Style};
 pub use palette::palette;
 
 use crate::PlotError;
@@ -119,19 +119,25 @@ pub fn render_svg(figure: &Figure) -> Result<(String, (u32, u32)), PlotError> {
     Ok((svg, size))
 }
 
-/// The figure with the points of its log panels replaced by their base-10 logarithms (points
+/// The figure with the coordinates on its log axes replaced by their base-10 logarithms (values
 /// not above zero become NaN, which the bounds and the drawing leave out); `None` without log
-/// panels.
+/// axes.
 fn logarithms(figure: &Figure) -> Option<Figure> {
-    if !figure.panels.iter().any(|p| p.log_axes) {
+    if figure.panels.iter().all(|p| p.log_axes == LogAxes::Neither) {
         return None;
     }
     let log = |v: f64| if v > 0.0 { v.log10() } else { f64::NAN };
     let mut out = figure.clone();
-    for panel in out.panels.iter_mut().filter(|p| p.log_axes) {
+    for panel in &mut out.panels {
+        let (x, y) = (panel.log_axes.x(), panel.log_axes.y());
         for s in &mut panel.series {
             for p in s.pieces.iter_mut().flatten() {
-                *p = (log(p.0), log(p.1));
+                if x {
+                    p.0 = log(p.0);
+                }
+                if y {
+                    p.1 = log(p.1);
+                }
             }
         }
     }

@@ -31,7 +31,7 @@ pub(super) fn render_png(svg: &str, (width, height): (u32, u32)) -> Result<Vec<u
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::{palette, render_svg, Figure, Legend, Panel, Series, Style};
+    use crate::render::{palette, render_svg, Figure, Legend, LogAxes, Panel, Series, Style};
 
     #[test]
     fn the_png_is_the_svg_rendered_with_text_and_data() {
@@ -41,7 +41,7 @@ mod tests {
                 legend: Legend::Auto,
                 color_bar: None,
                 equal_aspect: false,
-                log_axes: false,
+                log_axes: LogAxes::Neither,
                 title: "panel".into(),
                 x_label: "x".into(),
                 y_label: "y".into(),

@@ -1,0 +1,131 @@
+//! `wear`: fretting wear over `[wear] cycles` load cycles (`halfplane wear`). Runs the library's
+//! cycle-jumping loop on the case's worn march (with any `[wear]` fields the caller overrides)
+//! with the GIL released, and hands back the command's `--json` report with its `checkpoints` as
+//! one numpy array per `--csv` column, plus the fields of every checkpoint (`--fields`) as
+//! (checkpoints, cells) arrays.
+
+use crate::analyses::{csv_keys, SIGNAL_CHECK_INTERVAL};
+use crate::case::{to_toml, PyCase};
+use crate::convert;
+use crate::errors;
+use halfplane::march::Worn;
+use halfplane::wear::{self, Checkpoint, CheckpointFields, CycleWear, WornCycle};
+use halfplane::Error;
+use halfplane_case::report::wear::{WearReport, WearRow};
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyBaseException;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::time::Instant;
+
+/// The worn march, taking the GIL back between cycles every so often to see Ctrl-C (the wear
+/// loop's observer only runs at checkpoints, which may be many cycles apart).
+struct Watched<'a> {
+    worn: &'a mut Worn,
+    last_check: Instant,
+    /// The KeyboardInterrupt (or other signal handler's exception) that stopped the run.
+    interrupt: Option<PyErr>,
+}
+
+impl WornCycle for Watched<'_> {
+    fn x(&self) -> &[f64] {
+        self.worn.x()
+    }
+
+    fn width(&self) -> f64 {
+        self.worn.width()
+    }
+
+    fn elastic_approach(&self) -> f64 {
+        self.worn.elastic_approach()
+    }
+
+    fn cycle(&mut self, depth: &[f64]) -> halfplane::Result<CycleWear> {
+        if self.last_check.elapsed() >= SIGNAL_CHECK_INTERVAL {
+            self.last_check = Instant::now();
+            if let Err(interrupt) = Python::attach(|py| py.check_signals()) {
+                self.interrupt = Some(interrupt);
+                // Stops the loop; `wear_report` raises the interrupt instead of this error.
+                return Err(Error::NoCycle {
+                    what: "wear run (interrupted)",
+                });
+            }
+        }
+        self.worn.cycle(depth)
+    }
+}
+
+/// The fields of a checkpoint, as `--fields` names its columns after `x`.
+type Field = fn(&CheckpointFields) -> &[f64];
+const FIELDS: [(&str, Field); 6] = [
+    ("depth", |f| &f.depth),
+    ("depth_pad", |f| &f.depth_pad),
+    ("depth_specimen", |f| &f.depth_specimen),
+    ("pressure", |f| &f.pressure),
+    ("traction", |f| &f.traction),
+    ("slip_range", |f| &f.slip_range),
+];
+
+/// `halfplane wear CASE --cells CELLS --json` with the `[wear]` fields in `overrides` (a dict of
+/// the section's fields, e.g. `{"cycles": 1000}`) put in: the report as a dict whose
+/// `checkpoints` are one array per `--csv` column, with `x` (the cell centres) and each field of
+/// `--fields` as a (checkpoints, cells) array. A run that stops part way after reaching some
+/// checkpoints returns their report (`stopped` set, `simulated_cycles` None) with the exception
+/// to raise; one that reaches none raises it.
+#[pyfunction]
+#[pyo3(signature = (case, cells=None, overrides=None))]
+pub fn wear_report<'py>(
+    py: Python<'py>,
+    case: &PyCase,
+    cells: Option<usize>,
+    overrides: Option<&Bound<'py, PyDict>>,
+) -> PyResult<(Bound<'py, PyDict>, Option<Py<PyBaseException>>)> {
+    let case = &case.case;
+    let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
+    let settings = match overrides.map(|d| to_toml(d.as_any(), "wear")).transpose()? {
+        Some(toml::Value::Table(t)) if !t.is_empty() => case.wear_with(&t),
+        _ => case.wear(),
+    }
+    .map_err(input)?;
+    let options = &settings.options;
+    // Building the march marches the ramp: released too.
+    let mut worn = py
+        .detach(|| case.worn_march_named(settings.span, cells, "cells"))
+        .map_err(input)?;
+    let approach = worn.elastic_approach();
+    let mut reached: Vec<Checkpoint> = Vec::new();
+    let mut watched = Watched {
+        worn: &mut worn,
+        last_check: Instant::now(),
+        interrupt: None,
+    };
+    let outcome = py.detach(|| wear::run(&mut watched, options, |c| reached.push(c.clone())));
+    if let Some(interrupt) = watched.interrupt {
+        return Err(interrupt);
+    }
+    let (simulated, stopped) = match &outcome {
+        Ok(r) => (Some(r.simulated_cycles), None),
+        Err(e) => (None, Some(e.to_string())),
+    };
+    let error = match outcome {
+        Ok(_) => None,
+        Err(e) if reached.is_empty() => return Err(errors::from_library(py, &e)),
+        Err(e) => Some(errors::from_library(py, &e).into_value(py)),
+    };
+    let report = WearReport::new(&reached, simulated, approach, options, &case.units, stopped);
+    let (summary, rows) = convert::to_node(&report)?.take("checkpoints");
+    let out = summary.into_py(py)?.cast_into::<PyDict>()?;
+    let keys = csv_keys(&WearRow::COLUMNS);
+    out.set_item("checkpoints", convert::columns(py, &rows, &keys)?)?;
+    let x = worn.x().to_vec();
+    let shape = [reached.len(), x.len()];
+    out.set_item("x", PyArray1::from_vec(py, x))?;
+    for (name, field) in FIELDS {
+        let values: Vec<f64> = reached
+            .iter()
+            .flat_map(|c| field(&c.fields).iter().copied())
+            .collect();
+        out.set_item(name, PyArray1::from_vec(py, values).reshape(shape)?)?;
+    }
+    Ok((out, error))
+}
