@@ -234,3 +234,66 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
         assert!(on.0 <= 4e-3, "{name}: {:e} p0 at {}", on.0, on.1);
     }
 }
+
+#[test]
+fn a_worn_march_is_the_cell_level_one_with_the_option_on() {
+    // Over a worn gap the pressure is known at the cell centres only, so the march reports its
+    // cell-level solution whatever the option says; the option must not change a wear cycle
+    // (partial slip, then gross sliding with its slides at q = f p) or make it fail. The located
+    // boundaries never feed back into the march's state, but their solves share the kernel's
+    // cache of stick-run inverses, so the two marches agree to rounding only: measured 1e-13 of
+    // each field's largest value; asserted 1e-10.
+    use halfplane::history::Ramp;
+    use halfplane::march::Worn;
+    use halfplane::wear::WornCycle;
+    use halfplane::{reference, LoadPoint};
+    let cells = 400;
+    let plain = MarchOptions::default().with_cells(cells).unwrap();
+    let hertz = reference::hertz();
+    let (a, b) = (
+        LoadPoint::new("a", P, -300.0, 0.0).unwrap(),
+        LoadPoint::new("b", P, 300.0, 0.0).unwrap(),
+    );
+    let fretting = History::in_phase(a, b, 1, 10, Ramp::NormalFirst, 5).unwrap();
+    let load = LoadPoint::new("load", P, 0.0, 0.0).unwrap();
+    let build = |o: &MarchOptions| {
+        [
+            Worn::new(&hertz, &fretting, o, 2.0).unwrap(),
+            Worn::sliding(&hertz, load, 0.01, 10, 10, o, 8.0).unwrap(),
+        ]
+    };
+    let close = |what: &str, cycle: usize, a: &[f64], b: &[f64]| {
+        let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let off = a
+            .iter()
+            .zip(b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        assert!(
+            off <= 1e-10 * scale,
+            "cycle {cycle}: {what} off by {off:e} of {scale:e}"
+        );
+    };
+    for (mut on, mut off) in build(&options(cells)).into_iter().zip(build(&plain)) {
+        let mut depth = vec![0.0; cells];
+        for cycle in 0..3 {
+            let (with, without) = (on.cycle(&depth).unwrap(), off.cycle(&depth).unwrap());
+            close("pressure", cycle, &with.pressure, &without.pressure);
+            close("traction", cycle, &with.traction, &without.traction);
+            close("p |ds|", cycle, &with.pressure_slip, &without.pressure_slip);
+            close("slip range", cycle, &with.slip_range, &without.slip_range);
+            close("contact", cycle, &with.contact, &without.contact);
+            assert_eq!(
+                with.stick.is_some(),
+                without.stick.is_some(),
+                "cycle {cycle}"
+            );
+            if let (Some(s), Some(t)) = (with.stick, without.stick) {
+                close("stick zone", cycle, &s, &t);
+            }
+            // Some wear, so that the next cycle is over a worn gap.
+            for (d, ps) in depth.iter_mut().zip(&without.pressure_slip) {
+                *d += 1e-4 * ps;
+            }
+        }
+    }
+}
