@@ -2,7 +2,9 @@
 //! `valgrind --tool=callgrind target/release/examples/profile_march CELLS [flat-rounded|cattaneo]`.
 //! Default: the reference cycle of examples/march-cycle.toml (Hertz, 30 ramp + 270 cycle
 //! increments); `flat-rounded`: the same cycle on b = 0.3, R = 50; `cattaneo`: Hertz, P = 1000
-//! pressed in one increment, then Q = 0.5 f P in one more (two increments).
+//! pressed in one increment, then Q = 0.5 f P in one more (two increments). With `HP_SUB_CELL`
+//! set, the march locates its stick-slip boundaries inside their cells
+//! (`MarchOptions::with_sub_cell_boundaries`).
 use halfplane::history::{History, Ramp};
 use halfplane::march::{march, MarchOptions};
 use halfplane::{closed_form, reference};
@@ -29,7 +31,11 @@ fn main() {
     let r = march(
         &contact,
         &history,
-        &MarchOptions::default().with_cells(cells).unwrap(),
+        &MarchOptions::default()
+            .with_cells(cells)
+            .unwrap()
+            .with_sub_cell_boundaries(std::env::var_os("HP_SUB_CELL").is_some())
+            .unwrap(),
         |s, f| {
             passes += s.passes;
             if std::env::var_os("HP_PASSES").is_some() {

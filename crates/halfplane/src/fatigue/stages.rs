@@ -111,7 +111,8 @@ fn same_length(field: &str, v: &[f64], cells: usize) -> Result<()> {
     }
 }
 
-/// A march's fields holding only what a traction is built from.
+/// A march's fields holding only what a traction is built from (a worn cycle's boundaries are
+/// cell edges: no kinks).
 fn fields<'a>(x: &'a [f64], pressure: &'a [f64], traction: &'a [f64]) -> Fields<'a> {
     Fields {
         x,
@@ -119,6 +120,7 @@ fn fields<'a>(x: &'a [f64], pressure: &'a [f64], traction: &'a [f64]) -> Fields<
         traction,
         slip: &[],
         slip_increment: &[],
+        kinks: &[],
     }
 }
 

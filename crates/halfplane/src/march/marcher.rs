@@ -8,7 +8,10 @@
 //! `solve.rs`'s), never builds the kernel (`kernel.rs`), never integrates the energy of a
 //! sub-step (`dissipation.rs`) and never does cycle accounting (`cycles.rs`).
 
+use super::evaluate::EndSolution;
 use super::kernel;
+use super::layout::Layout;
+use super::moments::PressureShape;
 use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, StepReport};
@@ -49,6 +52,8 @@ pub struct Marcher {
     pub(super) compliance: f64,
     pub(super) friction: f64,
     pub(super) width: f64,
+    /// The length `l` scaling the logarithm of the kernel.
+    pub(super) scale: f64,
     pub(super) x: Vec<f64>,
     pub(super) kernel: Toeplitz,
     /// Row-major N x N kernel for [`LinearSolver::Dense`].
@@ -58,7 +63,13 @@ pub struct Marcher {
     load: Option<LoadPoint>,
     pub(super) energy: f64,
     pub(super) pressure: Vec<f64>,
+    /// The shear traction at each cell's centre (what is reported).
     pub(super) traction: Vec<f64>,
+    /// The limit `f p` of the current sub-step: its cell means and slopes, and its shape
+    /// (`moments.rs`; for the sub-cell boundaries).
+    pub(super) limit_mean: Vec<f64>,
+    pub(super) limit_slope: Vec<f64>,
+    pub(super) shape: PressureShape,
     pub(super) slip: Vec<f64>,
     slip_increment: Vec<f64>,
     /// Sum of |slip| over the sub-steps of the current increment (for the stick/slip labels).
@@ -75,6 +86,8 @@ pub struct Marcher {
     pub(super) pressure_start: Vec<f64>,
     /// The contact reached; `None` unloaded.
     state: Option<NormalContact>,
+    /// The contact the current sub-step goes to.
+    target: Option<NormalContact>,
     /// A worn gap at the cell centres (`set_gap`): the contact's pressure comes from the grid
     /// (`gap.rs`) instead of the profile's normal problem.
     gap: Option<Gap>,
@@ -82,6 +95,14 @@ pub struct Marcher {
     /// quadrature's per-cell sums without f): what wear removes.
     pub(super) pressure_slip: Vec<f64>,
     pub(super) cells: Vec<Cell>,
+    /// The last solve of `evaluate.rs`: its layout, its boundaries' solutions and its shift.
+    pub(super) layout: Option<Layout>,
+    pub(super) end_solutions: Vec<EndSolution>,
+    pub(super) shift: f64,
+    /// The last increment as reported with its boundaries inside cells (`boundary.rs`).
+    pub(super) view: Option<super::boundary::View>,
+    /// The kinks as reported after the last increment.
+    reported_kinks: Vec<super::boundary::TractionKink>,
     // Work buffers, reused by every increment.
     pub(super) known: Vec<f64>,
     /// `G known` of the last pass (`dissipation.rs` reuses it).
@@ -135,9 +156,14 @@ impl Marcher {
         }
         // The log kernel's scale must exceed the grid's length to stay positive definite
         // (kernel.rs); twice the length, as 4L for the symmetric span [-L, L].
-        let row = kernel::cell_row(n, width, 2.0 * (upper - lower));
+        let scale = 2.0 * (upper - lower);
+        let row = kernel::cell_row(n, width, scale);
         let dense = (options.solver() == LinearSolver::Dense).then(|| kernel::dense_matrix(&row));
-        let kernel = Toeplitz::new(row)?;
+        let mut kernel = Toeplitz::new(row)?;
+        if options.sub_cell() {
+            // The slopes' product only serves the located boundaries (`evaluate.rs`).
+            kernel = kernel.with_slopes(&kernel::slope_column(n, width));
+        }
         let zeros = vec![0.0; n];
         Ok(Self {
             contact: contact.clone(),
@@ -145,6 +171,8 @@ impl Marcher {
             compliance: contact.compliance().value(),
             friction: contact.friction.value(),
             width,
+            scale,
+            shape: PressureShape::new(&x, &zeros, PerEdge::default()),
             x,
             kernel,
             dense,
@@ -153,6 +181,8 @@ impl Marcher {
             energy: 0.0,
             pressure: zeros.clone(),
             traction: zeros.clone(),
+            limit_mean: zeros.clone(),
+            limit_slope: zeros.clone(),
             slip: zeros.clone(),
             slip_increment: zeros.clone(),
             slip_travel: zeros.clone(),
@@ -162,9 +192,15 @@ impl Marcher {
             start_cells: vec![Cell::Out; n],
             pressure_start: zeros.clone(),
             state: None,
+            target: None,
             gap: None,
             pressure_slip: zeros.clone(),
             cells: vec![Cell::Out; n],
+            layout: None,
+            end_solutions: Vec::new(),
+            shift: 0.0,
+            view: None,
+            reported_kinks: Vec::new(),
             known: zeros.clone(),
             g_known: zeros.clone(),
             dq: zeros.clone(),
@@ -185,9 +221,10 @@ impl Marcher {
         Fields {
             x: &self.x,
             pressure: &self.pressure,
-            traction: &self.traction,
+            traction: self.view.as_ref().map_or(&self.traction, |v| &v.traction),
             slip: &self.slip,
             slip_increment: &self.slip_increment,
+            kinks: &self.reported_kinks,
         }
     }
 
@@ -274,12 +311,13 @@ impl Marcher {
                 Some(from) => from.lerp(&load, t),
                 None => load.scaled(t),
             };
-            let (energy, used) = self.advance(target_load, contact_t, step)?;
+            let (energy, used) = self.advance(target_load, contact_t, step, t == 1.0)?;
             energy_increment += energy;
             passes += used;
         }
         self.energy += energy_increment;
         self.step = step;
+        self.reported_kinks = self.view.as_ref().map_or(Vec::new(), |v| v.kinks.clone());
         // Kinematic classification: contact cells that did not slip this increment.
         let ends = target.ends();
         let n = self.x.len();
@@ -291,8 +329,20 @@ impl Marcher {
             match (sticks, open) {
                 (true, None) => open = Some(i),
                 (false, Some(start)) => {
-                    let left = (self.x[start] - 0.5 * self.width).max(ends.left);
-                    let right = (self.x[i - 1] + 0.5 * self.width).min(ends.right);
+                    // A run ends at a cell edge, or at the boundary located inside a cell next to
+                    // it (within a cell of that edge, with the run on its stick side).
+                    let located = |edge: f64, root: Edge| {
+                        self.reported_kinks
+                            .iter()
+                            .filter(|k| k.root == root)
+                            .map(|k| k.x)
+                            .find(|at| (at - edge).abs() <= self.width)
+                            .unwrap_or(edge)
+                    };
+                    let left =
+                        located(self.x[start] - 0.5 * self.width, Edge::Right).max(ends.left);
+                    let right =
+                        located(self.x[i - 1] + 0.5 * self.width, Edge::Left).min(ends.right);
                     stick_intervals.push([left, right]);
                     open = None;
                 }
@@ -451,6 +501,7 @@ impl Marcher {
         load: LoadPoint,
         target: NormalContact,
         step: usize,
+        last: bool,
     ) -> Result<(f64, usize)> {
         let n = self.x.len();
         let f = self.friction;
@@ -461,6 +512,7 @@ impl Marcher {
             // Pressing alone (the first leg of a normal-first ramp): zero traction sticks and
             // carries no shear, which is the solution; nothing slips.
             self.sub_slip.fill(0.0);
+            self.view = None;
             self.load = Some(load);
             self.state = Some(target);
             return Ok((0.0, 0));
@@ -562,8 +614,41 @@ impl Marcher {
             }
         }
         let energy = self.dissipation(ends_start, target.ends(), step)?;
+        // A worn gap's pressure is known at the cell centres only, not as the profile's closed
+        // form that the located boundaries' limit moments integrate (`moments.rs`).
+        if last && self.options.sub_cell() && self.gap.is_none() {
+            passes += self.view(load, &target, d_sigma, step)?;
+        } else {
+            self.view = None;
+        }
         self.commit(load, target);
         Ok((energy, passes))
+    }
+
+    /// The limit traction `f p` of the current sub-step as cell means and slopes.
+    pub(super) fn limits(&mut self, target: &NormalContact) {
+        let (w, f) = (self.width, self.friction);
+        self.shape = PressureShape::new(&self.x, &self.pressure, target.ends());
+        for i in 0..self.x.len() {
+            let xi = self.x[i];
+            let [m0, m1] = if self.cells[i] == Cell::Out {
+                [0.0; 2]
+            } else {
+                self.shape.moments(i, xi, w, xi - 0.5 * w, xi + 0.5 * w)
+            };
+            self.limit_mean[i] = f * m0 / w;
+            self.limit_slope[i] = f * 12.0 * m1 / (w * w * w);
+        }
+    }
+
+    /// The pressure of the current sub-step's contact at `x`.
+    pub(super) fn pressure_at(&self, x: f64) -> Result<f64> {
+        match &self.target {
+            Some(t) if x > t.end(Edge::Left) && x < t.end(Edge::Right) => {
+                self.contact.pressure_at(t, x)
+            }
+            _ => Ok(0.0),
+        }
     }
 
     /// The contact ends reached, `[0, 0]` unloaded.
@@ -575,6 +660,7 @@ impl Marcher {
     /// contact until the receding edge reaches its centre (its pressure, and so its traction, is
     /// zero then) and joins, sticking, when the advancing edge does. Keeps the sub-step's start.
     fn press(&mut self, target: &NormalContact) -> Result<()> {
+        self.target = Some(*target);
         self.pressure_start.copy_from_slice(&self.pressure);
         let (now, then) = (
             target.ends(),
@@ -690,6 +776,9 @@ impl Marcher {
             });
         };
         let (sign, f) = (distance.signum(), self.friction);
+        // What the fields report is now the sliding traction, with no stick-slip boundary.
+        self.view = None;
+        self.reported_kinks.clear();
         let mut energy = 0.0;
         for i in 0..self.x.len() {
             if self.cells[i] == Cell::Out {

@@ -32,26 +32,43 @@
 //! step (onset times, start-set slip rates, and the curvature of the slipping tractions, which
 //! costs one more stick solve); it is never negative.
 //!
+//! Stick-slip boundaries inside cells (optional, `MarchOptions::with_sub_cell_boundaries`): the
+//! cell-level active set puts every zone end at a cell edge, so the traction error near a
+//! stick-slip boundary is of the order `K sqrt(w)` (K the square-root amplitude there). With the
+//! option, each increment's last sub-step is solved once more with each zone that ends next to
+//! slipping cells bounded inside the cells, the traction there carrying the boundary's square
+//! root, and the boundaries placed where the stick side's traction meets the limit without a
+//! jump (`boundary.rs`); the increment reports that solution, the march goes on from the
+//! cell-level one.
+//!
 //! Stick and slip are reported kinematically, by the slip increment: a cell is labelled stuck in
 //! an increment when it slid less than `slip_tolerance` times `A f P`. That threshold labels only;
 //! the active set reverses a slipping cell only when its slip would reverse by more than rounding.
 //!
 //! This module owns only the overview above and the public paths; the work is done by stage:
-//! `types.rs` (options and reports), `kernel.rs` (the cell matrix), `solve.rs` (the stick cells'
-//! linear systems), `toeplitz.rs` (FFT products and exact inverses of stick runs), `marcher.rs`
-//! (the active set and the moving-edge sub-steps), `dissipation.rs` (the energy of a sub-step)
-//! and `cycles.rs` (the driver, per-cycle slip ranges and shakedown). It never holds code of its own, only declarations and re-exports.
+//! `types.rs` (options and reports), `kernel.rs` (the cell matrix and the special elements),
+//! `solve.rs` (the stick cells' linear systems), `toeplitz.rs` (FFT products and exact inverses of
+//! stick runs), `marcher.rs` (the active set and the moving-edge sub-steps), `dissipation.rs` (the
+//! energy of a sub-step), `cycles.rs` (the driver, per-cycle slip ranges and shakedown), and for
+//! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs` and `boundary.rs`; `gap.rs`
+//! (the normal problem of a worn gap on the grid) and `worn.rs` (the march over a worn gap) serve
+//! wear. It never holds code of its own, only declarations and re-exports.
 
+mod boundary;
 mod cycles;
 mod dissipation;
+mod evaluate;
 pub(crate) mod gap;
 mod kernel;
+mod layout;
 mod marcher;
+mod moments;
 mod solve;
 mod toeplitz;
 mod types;
 mod worn;
 
+pub use boundary::TractionKink;
 pub use cycles::{march, march_steady, march_steady_until, march_until};
 pub use marcher::Marcher;
 pub use types::{CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, StepReport};

@@ -31,56 +31,58 @@ pub(super) enum Rhs {
 impl Marcher {
     /// Solves `G_SS z = b` on the stick cells S, into `u` (b = rhs) or `v` (b = 1).
     pub(super) fn solve_stick(&mut self, which: &Rhs, step: usize) -> Result<()> {
-        if matches!(which, Rhs::Ones) {
-            // v depends only on the stick set, which most passes and sub-steps keep.
-            let same = self.v_mask.len() == self.cells.len()
-                && self
-                    .v_mask
-                    .iter()
-                    .zip(&self.cells)
-                    .all(|(m, c)| *m == (*c == Cell::Stick));
-            if same {
-                return Ok(());
+        let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
+        match which {
+            Rhs::Vector => {
+                let (b, mut out) = (std::mem::take(&mut self.rhs), std::mem::take(&mut self.u));
+                let result = self.solve_set(&set, &b, &mut out, step);
+                (self.rhs, self.u) = (b, out);
+                result
             }
-            self.v_mask.clear();
+            Rhs::Ones => self.solve_ones(&set, step),
         }
-        let runs = stick_runs(&self.cells);
-        let mut out = std::mem::take(match which {
-            Rhs::Vector => &mut self.u,
-            Rhs::Ones => &mut self.v,
-        });
-        let b: Vec<f64> = match which {
-            Rhs::Vector => self.rhs.clone(),
-            Rhs::Ones => self
-                .cells
-                .iter()
-                .map(|c| if *c == Cell::Stick { 1.0 } else { 0.0 })
-                .collect(),
-        };
+    }
+
+    /// `v = G_SS^{-1} 1` on the set S, kept while S is unchanged (most passes and sub-steps keep it).
+    pub(super) fn solve_ones(&mut self, set: &[bool], step: usize) -> Result<()> {
+        if self.v_mask == set {
+            return Ok(());
+        }
+        self.v_mask.clear();
+        let b: Vec<f64> = set.iter().map(|s| if *s { 1.0 } else { 0.0 }).collect();
+        let mut out = std::mem::take(&mut self.v);
+        let result = self.solve_set(set, &b, &mut out, step);
+        self.v = out;
+        if result.is_ok() {
+            self.v_mask.extend_from_slice(set);
+        }
+        result
+    }
+
+    /// `z = G_SS^{-1} b` on the cells of `set` (zero elsewhere): the exact Toeplitz inverse of a
+    /// single run, block elimination of a few cells outside the longest run, conjugate
+    /// gradients otherwise, or dense Cholesky with [`LinearSolver::Dense`](super::LinearSolver).
+    pub(super) fn solve_set(
+        &mut self,
+        set: &[bool],
+        b: &[f64],
+        out: &mut [f64],
+        step: usize,
+    ) -> Result<()> {
+        let runs = runs_of(set);
         out.iter_mut().for_each(|v| *v = 0.0);
-        let result = if let Some(g) = &self.dense {
-            dense_stick_solve(g, &self.cells, &b, &mut out, step)
+        if let Some(g) = &self.dense {
+            dense_stick_solve(g, set, b, out, step)
         } else if runs.len() == 1 {
             let (s, e) = runs[0];
             self.kernel.solve(&b[s..e], &mut out[s..e]);
             Ok(())
-        } else if self.schur_solve(&runs, &b, &mut out) {
+        } else if self.schur_solve(set, &runs, b, out) {
             Ok(())
         } else {
             out.iter_mut().for_each(|v| *v = 0.0);
-            self.pcg(&runs, &b, &mut out, step)
-        };
-        match which {
-            Rhs::Vector => self.u = out,
-            Rhs::Ones => {
-                self.v = out;
-                if result.is_ok() {
-                    self.v_mask
-                        .extend(self.cells.iter().map(|c| *c == Cell::Stick));
-                }
-            }
+            self.pcg(set, &runs, b, out, step)
         }
-        result
     }
 
     /// `G_SS z = b` when S is one long run B plus a few other cells E (typically cells that
@@ -91,15 +93,15 @@ impl Marcher {
     /// W and the Cholesky factor of S are kept while the stick set is unchanged. Exact up to
     /// rounding, like the single-run solve. Returns false (nothing solved) when E is too large
     /// or S is not numerically positive definite; the caller then uses CG.
-    fn schur_solve(&mut self, runs: &[(usize, usize)], b: &[f64], z: &mut [f64]) -> bool {
+    fn schur_solve(
+        &mut self,
+        set: &[bool],
+        runs: &[(usize, usize)],
+        b: &[f64],
+        z: &mut [f64],
+    ) -> bool {
         const MAX_EXTRA: usize = 32;
-        let same = self.schur.as_ref().is_some_and(|c| {
-            c.mask.len() == self.cells.len()
-                && c.mask
-                    .iter()
-                    .zip(&self.cells)
-                    .all(|(m, cell)| *m == (*cell == Cell::Stick))
-        });
+        let same = self.schur.as_ref().is_some_and(|c| c.mask == set);
         if !same {
             self.schur = None;
             // No stick cell at all (no cell centre inside the contact yet): nothing to eliminate.
@@ -151,7 +153,7 @@ impl Marcher {
                 }
             }
             self.schur = Some(SchurCache {
-                mask: self.cells.iter().map(|c| *c == Cell::Stick).collect(),
+                mask: set.to_vec(),
                 start: s0,
                 end: e0,
                 extra,
@@ -198,6 +200,7 @@ impl Marcher {
     /// Conjugate gradients on the stick cells, preconditioned by the exact inverse of each run.
     pub(super) fn pcg(
         &mut self,
+        set: &[bool],
         runs: &[(usize, usize)],
         b: &[f64],
         z: &mut [f64],
@@ -220,9 +223,9 @@ impl Marcher {
         let mut rz: f64 = r.iter().zip(y.iter()).map(|(a, b)| a * b).sum();
         for _ in 0..500 {
             self.kernel.apply(p, ap);
-            for (i, c) in self.cells.iter().enumerate() {
-                if *c != Cell::Stick {
-                    ap[i] = 0.0;
+            for (a, s) in ap.iter_mut().zip(set) {
+                if !s {
+                    *a = 0.0;
                 }
             }
             let alpha = rz / p.iter().zip(ap.iter()).map(|(a, b)| a * b).sum::<f64>();
@@ -266,15 +269,9 @@ pub(super) fn apply(kernel: &mut Toeplitz, dense: &Option<Vec<f64>>, v: &[f64], 
 }
 
 /// Cholesky solve of `G_SS z = b` over all stick cells (the dense route).
-fn dense_stick_solve(
-    g: &[f64],
-    cells: &[Cell],
-    b: &[f64],
-    z: &mut [f64],
-    step: usize,
-) -> Result<()> {
-    let n_all = cells.len();
-    let s: Vec<usize> = (0..n_all).filter(|&i| cells[i] == Cell::Stick).collect();
+fn dense_stick_solve(g: &[f64], set: &[bool], b: &[f64], z: &mut [f64], step: usize) -> Result<()> {
+    let n_all = set.len();
+    let s: Vec<usize> = (0..n_all).filter(|&i| set[i]).collect();
     let n = s.len();
     let mut l = vec![0.0; n * n];
     for i in 0..n {
@@ -308,12 +305,12 @@ fn dense_stick_solve(
     Ok(())
 }
 
-/// Maximal runs `[start, end)` of stick cells.
-fn stick_runs(cells: &[Cell]) -> Vec<(usize, usize)> {
+/// Maximal runs `[start, end)` of cells in `set`.
+fn runs_of(set: &[bool]) -> Vec<(usize, usize)> {
     let mut runs = Vec::new();
     let mut start = None;
-    for i in 0..=cells.len() {
-        let stick = i < cells.len() && cells[i] == Cell::Stick;
+    for i in 0..=set.len() {
+        let stick = i < set.len() && set[i];
         match (stick, start) {
             (true, None) => start = Some(i),
             (false, Some(s)) => {
@@ -388,10 +385,11 @@ mod tests {
             .enumerate()
             .all(|(i, v)| stick.contains(&i) || *v == 0.0));
         // The same system by CG alone (the route for many cells outside the longest run).
-        let runs = stick_runs(&m.cells);
+        let set: Vec<bool> = m.cells.iter().map(|c| *c == Cell::Stick).collect();
+        let runs = runs_of(&set);
         let b = m.rhs.clone();
         let mut by_cg = vec![0.0; 64];
-        m.pcg(&runs, &b, &mut by_cg, 1).unwrap();
+        m.pcg(&set, &runs, &b, &mut by_cg, 1).unwrap();
         for (k, &i) in stick.iter().enumerate() {
             assert!(
                 (by_cg[i] - z[k]).abs() < 1e-10 * size,
@@ -408,9 +406,8 @@ mod tests {
         // reported as a non-positive pivot at the cell where it fails, not as an active-set
         // failure. [[1, 2], [2, 1]] fails at its second pivot (1 - 4 < 0).
         let g = [1.0, 2.0, 2.0, 1.0];
-        let cells = [Cell::Stick, Cell::Stick];
         let mut z = [0.0; 2];
-        let err = dense_stick_solve(&g, &cells, &[1.0, 1.0], &mut z, 7).unwrap_err();
+        let err = dense_stick_solve(&g, &[true, true], &[1.0, 1.0], &mut z, 7).unwrap_err();
         assert_eq!(err, Error::NonPositivePivot { step: 7, index: 1 });
         assert!(err.to_string().contains("step 7"), "{err}");
     }

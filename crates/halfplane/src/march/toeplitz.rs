@@ -105,6 +105,9 @@ pub(crate) struct Toeplitz {
     planner: RealFftPlanner<f64>,
     full: Fft,
     full_spectrum: Vec<Complex<f64>>,
+    /// Spectrum of the circulant embedding of the skew slope matrix (`kernel::slope_column`),
+    /// when given.
+    slope_spectrum: Vec<Complex<f64>>,
     cache: Vec<Generator>,
     work: Vec<Complex<f64>>,
     work2: Vec<Complex<f64>>,
@@ -147,6 +150,7 @@ impl Toeplitz {
             planner,
             full,
             full_spectrum,
+            slope_spectrum: Vec::new(),
             cache: Vec::new(),
             work: vec![Complex::default(); m / 2 + 1],
             work2: vec![Complex::default(); m / 2 + 1],
@@ -169,6 +173,40 @@ impl Toeplitz {
             *w *= s;
         }
         self.full.invert(&mut self.work[..m / 2 + 1], &mut y[..n]);
+    }
+
+    /// Adds the skew Toeplitz matrix `S_ij = g_(i-j)`, `g_(-k) = -g_k`, given by its first column
+    /// g (of length N), for [`Self::apply_moments`].
+    pub fn with_slopes(mut self, column: &[f64]) -> Self {
+        let n = self.row.len();
+        let m = self.full.m;
+        let mut embedding = vec![0.0; m];
+        embedding[..n].copy_from_slice(column);
+        for k in 1..n {
+            embedding[m - k] = -column[k];
+        }
+        let mut spectrum = vec![Complex::default(); m / 2 + 1];
+        self.full.spectrum(&embedding, &mut spectrum);
+        self.slope_spectrum = spectrum;
+        self
+    }
+
+    /// `y = T_N mean + S slope` (full grid), both by the circulant embeddings: the displacement
+    /// kernel of cells carrying `mean + slope (xi - x_j)`.
+    pub fn apply_moments(&mut self, mean: &[f64], slope: &[f64], y: &mut [f64]) {
+        let n = self.row.len();
+        let h = self.full.m / 2 + 1;
+        let (w1, w2) = (&mut self.work[..h], &mut self.work2[..h]);
+        self.full.spectrum(mean, w1);
+        self.full.spectrum(slope, w2);
+        for ((a, b), (s, t)) in w1
+            .iter_mut()
+            .zip(w2.iter())
+            .zip(self.full_spectrum.iter().zip(&self.slope_spectrum))
+        {
+            *a = *a * s + b * t;
+        }
+        self.full.invert(w1, &mut y[..n]);
     }
 
     /// `z = T_n^{-1} b` for the leading block of order n = b.len().

@@ -1,0 +1,347 @@
+//! Stick-slip boundaries inside cells (`docs/convergence.md`, "Sub-cell stick-slip
+//! boundaries"): where the cell-level active set ends a stick zone next to slipping cells at both
+//! ends, [`Marcher::refine`] moves both ends continuously until the traction meets the friction
+//! limit there without a jump, and [`Marcher::view`] reports the increment so solved.
+//!
+//! **Locating a boundary.** For boundaries at trial points `at`, `evaluate.rs` solves the
+//! sub-step with the square root of each boundary among the unknowns and returns at each the jump
+//! `J = s q(at-) - f p(at)` of the stick side's traction over the limit. In exact theory the stick
+//! zone's traction has an inverse square-root singularity at a wrong end, of either sign; the
+//! discrete jump measures it and is nearly linear in `at` inside a cell (slope about
+//! `0.5 f p0` per cell). The boundaries are its roots, found boundary by boundary (secant, then
+//! regula falsi inside a bracket) from the cell edges the active set left.
+//!
+//! **What it changes.** The solution reported for the increment: its traction at the cells'
+//! centres, its boundaries ([`TractionKink`], for the stresses' node form) and the ends of its
+//! stick intervals. The march goes on from the cell-level solution: coupled into the state, the
+//! located boundaries made the cycle's end state depend on where each boundary fell in its cell
+//! (a different discrete problem every increment), so cycles stopped repeating to rounding and
+//! cells left at the limit by a ramp crept (docs/convergence.md gives the measurements).
+//!
+//! Owns the boundaries' search and the reported view. Never solves a linear system itself
+//! (`evaluate.rs` does) and never changes the state the next increment starts from.
+
+use super::layout::{layout, zones_of, End, Layout, Role};
+use super::marcher::{Cell, Marcher};
+use crate::error::Result;
+use crate::labels::Edge;
+use crate::load::LoadPoint;
+use crate::normal_moment::NormalContact;
+
+/// Most solves spent on locating the boundaries of one sub-step.
+const MAX_SOLVES: usize = 16;
+/// A jump below this fraction of `f p_max` at the cell-level ends is no boundary to locate.
+const QUIET: f64 = 1e-4;
+
+/// A stick-slip boundary located inside its cell: the shear traction is continuous there and has
+/// a square root on the stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the
+/// `root` side, so that the stick zone's traction meets the friction limit with an infinite
+/// slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
+/// a square-root interval.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TractionKink {
+    /// Where the kink is.
+    pub x: f64,
+    /// The side of `x` carrying the square root (the stick side of a boundary).
+    pub root: Edge,
+    /// `amplitude`: the coefficient of `sqrt(|x - x_b|)`.
+    pub amplitude: f64,
+    /// The shear traction at `x`.
+    pub shear: f64,
+    /// The pressure at `x`.
+    pub pressure: f64,
+}
+
+/// The increment's end as reported with its stick-slip boundaries inside their cells: the
+/// centre tractions and the boundaries.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct View {
+    pub traction: Vec<f64>,
+    pub kinks: Vec<TractionKink>,
+}
+
+impl Marcher {
+    /// The last sub-step of an increment solved again with its stick-slip boundaries located
+    /// inside their cells (`refine`), from the state at the sub-step's start, for what the
+    /// increment reports; the state goes on from the cell-level solution, whose buffers are
+    /// restored. `None` when no zone has a boundary next to a slipping cell at both ends (or
+    /// when the search finds none to locate): the cell-level state is reported. Returns the
+    /// solves used.
+    pub(super) fn view(
+        &mut self,
+        load: LoadPoint,
+        target: &NormalContact,
+        d_sigma: f64,
+        step: usize,
+    ) -> Result<usize> {
+        self.view = None;
+        self.limits(target);
+        let saved = (
+            self.dq.clone(),
+            self.sub_slip.clone(),
+            self.known.clone(),
+            self.g_known.clone(),
+            self.shift,
+        );
+        self.layout = None;
+        let solves = self.refine(d_sigma, load.shear(), step)?;
+        if let Some(lay) = self.layout.take().filter(|l| !l.ends.is_empty()) {
+            let traction = self
+                .traction
+                .iter()
+                .zip(&self.dq)
+                .map(|(q, d)| q + d)
+                .collect();
+            let mut kinks = Vec::with_capacity(lay.ends.len());
+            for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
+                let pressure = self.pressure_at(e.at)?;
+                kinks.push(TractionKink {
+                    x: e.at,
+                    root: if e.side > 0.0 {
+                        Edge::Left
+                    } else {
+                        Edge::Right
+                    },
+                    amplitude: sol.amplitude,
+                    shear: e.sign * self.friction * pressure,
+                    pressure,
+                });
+            }
+            self.view = Some(View { traction, kinks });
+        }
+        (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
+        Ok(solves)
+    }
+
+    /// Locates the stick-slip boundaries of the sub-step inside their cells, starting from the
+    /// cell-level active set's zones, and leaves the solution of the last solve in the work
+    /// buffers with its layout in `self.layout`. Returns the solves used (none without a zone end
+    /// next to a slipping cell: the cell-level solution stands).
+    ///
+    /// Each boundary is searched on its own jump (the others move at the same time; they couple
+    /// only through the resultant and the zone): a secant step on the last two points, or on the
+    /// slope `f p_max/(2 w)` at first, until the jump changes sign, then regula falsi (Illinois)
+    /// inside the bracket. The jump is continuous inside a cell but steps where the boundary
+    /// element switches between a partial and a merged cell; a root there is taken at the step
+    /// (the bracket closes on it), within a few hundredths of a cell of either branch's root.
+    pub(super) fn refine(&mut self, d_sigma: f64, shear: f64, step: usize) -> Result<usize> {
+        let w = self.width;
+        // Only zones with a boundary at both ends: a zone that reaches a contact edge (full stick
+        // at an advancing edge) keeps cell-level ends, where its one boundary's jump was found to
+        // wander (a few cells of stick between the edge and a slip zone).
+        let zones: Vec<super::layout::Zone> = zones_of(&self.cells, &self.x, w)
+            .into_iter()
+            .map(|mut z| {
+                if !matches!((z.left, z.right), (End::Soft { .. }, End::Soft { .. })) {
+                    (z.left, z.right) = (End::Hard, End::Hard);
+                }
+                z
+            })
+            .collect();
+        let soft: Vec<(usize, bool)> = zones
+            .iter()
+            .enumerate()
+            .flat_map(|(z, zone)| {
+                let mut v = Vec::new();
+                if matches!(zone.left, End::Soft { .. }) {
+                    v.push((z, false));
+                }
+                if matches!(zone.right, End::Soft { .. }) {
+                    v.push((z, true));
+                }
+                v
+            })
+            .collect();
+        if soft.is_empty() {
+            return Ok(0);
+        }
+        // Each boundary's outward coordinate y = side at (its jump grows with y).
+        let side = |right: bool| if right { 1.0 } else { -1.0 };
+        let mut searches: Vec<Search> = soft
+            .iter()
+            .map(|&(z, right)| {
+                let end = if right { zones[z].right } else { zones[z].left };
+                let End::Soft { at, .. } = end else {
+                    unreachable!("only soft ends are searched")
+                };
+                Search::new(side(right) * at)
+            })
+            .collect();
+        let place = |searches: &[Search]| {
+            let mut zs = zones.clone();
+            for (&(z, right), sr) in soft.iter().zip(searches) {
+                let at = side(right) * sr.y;
+                let end = if right {
+                    &mut zs[z].right
+                } else {
+                    &mut zs[z].left
+                };
+                if let End::Soft { sign, .. } = *end {
+                    *end = End::Soft { at, sign };
+                }
+            }
+            zs
+        };
+        let f_scale = self.friction * self.pressure.iter().fold(0.0f64, |a, p| a.max(*p));
+        let slope = 0.5 * f_scale / w;
+        let mut solves = 0;
+        let mut best: Option<(f64, Vec<f64>)> = None;
+        while solves < MAX_SOLVES {
+            let Some(lay) = layout(&self.cells, &self.x, w, &place(&searches)) else {
+                break;
+            };
+            if lay
+                .roles
+                .iter()
+                .zip(&self.cells)
+                .any(|(r, c)| *c == Cell::Out && *r != Role::Out)
+            {
+                break;
+            }
+            solves += 1;
+            let ends = self.evaluate(&lay, d_sigma, shear, step)?;
+            let mut done = true;
+            for (sr, e) in searches.iter_mut().zip(&ends) {
+                done &= sr.record(e.jump, 1e-10 * f_scale, 1e-9 * w);
+            }
+            let size = ends.iter().fold(0.0f64, |a, e| a.max(e.jump.abs()));
+            if solves == 1 && size <= QUIET * f_scale {
+                // The traction meets the limit at the cell edges already: no boundary to locate
+                // (a stick zone ending in a band of cells at the limit, where the jump is only
+                // discretisation noise and any point of the band would do). The cell-level
+                // solution stands.
+                break;
+            }
+            if best.as_ref().is_none_or(|b| size < b.0) {
+                best = Some((size, searches.iter().map(|s| s.y).collect()));
+            }
+            self.end_solutions = ends;
+            self.layout = Some(lay);
+            if done {
+                return Ok(solves);
+            }
+            for sr in searches.iter_mut() {
+                sr.advance(slope, w);
+            }
+        }
+        // Not converged: the best point if its jumps are small (a root at a step of the jump
+        // between two branches leaves them at the step's size), else the cell-level layout.
+        if let Some((size, ys)) = best {
+            if size <= 1e-2 * f_scale {
+                for (sr, y) in searches.iter_mut().zip(ys) {
+                    sr.y = y;
+                }
+                if let Some(lay) = layout(&self.cells, &self.x, w, &place(&searches)) {
+                    self.end_solutions = self.evaluate(&lay, d_sigma, shear, step)?;
+                    self.layout = Some(lay);
+                    return Ok(solves + 1);
+                }
+            }
+        }
+        let lay = Layout::cells(&self.cells, &self.x, w);
+        self.end_solutions = self.evaluate(&lay, d_sigma, shear, step)?;
+        self.layout = Some(lay);
+        Ok(solves + 1)
+    }
+}
+
+/// The search for one boundary, in its outward coordinate y (the jump J grows with y).
+struct Search {
+    y: f64,
+    jump: f64,
+    /// The previous point and its jump.
+    last: Option<(f64, f64)>,
+    /// The bracket: the last points with J < 0 and with J > 0.
+    below: Option<(f64, f64)>,
+    above: Option<(f64, f64)>,
+    /// How many times running the new point fell on the same side (+ above, - below): Illinois
+    /// halves the jump of the end that stays.
+    kept: i32,
+}
+
+impl Search {
+    fn new(y: f64) -> Self {
+        Self {
+            y,
+            jump: 0.0,
+            last: None,
+            below: None,
+            above: None,
+            kept: 0,
+        }
+    }
+
+    /// Records the jump at the current point; true when it is within `tolerance` or the
+    /// bracket is narrower than `width`.
+    fn record(&mut self, jump: f64, tolerance: f64, width: f64) -> bool {
+        self.jump = jump;
+        if jump < 0.0 {
+            self.kept = self.kept.min(0) - 1;
+            self.below = Some((self.y, jump));
+        } else {
+            self.kept = self.kept.max(0) + 1;
+            self.above = Some((self.y, jump));
+        }
+        let narrow = match (self.below, self.above) {
+            (Some(b), Some(a)) => (a.0 - b.0).abs() <= width,
+            _ => false,
+        };
+        jump.abs() <= tolerance || narrow
+    }
+
+    /// The next point: regula falsi inside a bracket (Illinois: when the new points keep falling
+    /// on one side, the other end's jump is halved), else a secant step on the last two points
+    /// or on `slope`, at most four cells.
+    fn advance(&mut self, slope: f64, w: f64) {
+        let (y, jump) = (self.y, self.jump);
+        self.y = match (self.below, self.above) {
+            (Some((yb, mut jb)), Some((ya, mut ja))) => {
+                if self.kept >= 2 {
+                    jb *= 0.5f64.powi(self.kept - 1);
+                } else if self.kept <= -2 {
+                    ja *= 0.5f64.powi(-self.kept - 1);
+                }
+                let t = (yb * ja - ya * jb) / (ja - jb);
+                let (lo, hi) = (yb.min(ya), yb.max(ya));
+                if t.is_finite() && t > lo && t < hi {
+                    t
+                } else {
+                    0.5 * (lo + hi)
+                }
+            }
+            _ => {
+                let s = match self.last {
+                    Some((y0, j0)) if y != y0 && (jump - j0) / (y - y0) > 0.0 => {
+                        (jump - j0) / (y - y0)
+                    }
+                    _ => slope,
+                };
+                y - (jump / s).clamp(-4.0 * w, 4.0 * w)
+            }
+        };
+        self.last = Some((y, jump));
+    }
+}
+
+impl Layout {
+    /// The layout of the cell-level state: stick cells free, no boundary inside a cell.
+    pub(super) fn cells(cells: &[Cell], x: &[f64], width: f64) -> Layout {
+        let roles = cells
+            .iter()
+            .map(|c| match c {
+                Cell::Out => Role::Out,
+                Cell::Slip(s) => Role::Slip(*s),
+                Cell::Stick => Role::Free,
+            })
+            .collect();
+        let zones = zones_of(cells, x, width)
+            .iter()
+            .map(|z| [x[z.first] - 0.5 * width, x[z.last] + 0.5 * width])
+            .collect();
+        Layout {
+            roles,
+            ends: Vec::new(),
+            zones,
+        }
+    }
+}
