@@ -2,6 +2,8 @@
 //! issue 20 item 1) against the closed forms: the Cattaneo-Mindlin traction and stick zone, and the
 //! surface stresses of the Mindlin loading and unloading (McEwen's fields superposed).
 
+#![cfg(feature = "sub-cell")]
+
 mod common;
 use common::*;
 use halfplane::history::History;

@@ -160,6 +160,13 @@ impl Marcher {
         let row = kernel::cell_row(n, width, scale);
         let dense = (options.solver() == LinearSolver::Dense).then(|| kernel::dense_matrix(&row));
         let mut kernel = Toeplitz::new(row)?;
+        if options.sub_cell() && !cfg!(feature = "sub-cell") {
+            return Err(Error::InvalidInput {
+                field: "solver.sub_cell_boundaries".into(),
+                value: 1.0,
+                valid: "false in this build: the library's `sub-cell` feature (on by default, off in the web page) is left out",
+            });
+        }
         if options.sub_cell() {
             // The slopes' product only serves the located boundaries (`evaluate.rs`).
             kernel = kernel.with_slopes(&kernel::slope_column(n, width));
@@ -616,7 +623,9 @@ impl Marcher {
         let energy = self.dissipation(ends_start, target.ends(), step)?;
         // A worn gap's pressure is known at the cell centres only, not as the profile's closed
         // form that the located boundaries' limit moments integrate (`moments.rs`).
-        if last && self.options.sub_cell() && self.gap.is_none() {
+        // `cfg!`: a build without the feature (the web page) leaves the located boundaries'
+        // code out of its binary.
+        if last && cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none() {
             passes += self.view(load, &target, d_sigma, step)?;
         } else {
             self.view = None;

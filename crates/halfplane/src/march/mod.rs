@@ -54,9 +54,12 @@
 //! (the normal problem of a worn gap on the grid) and `worn.rs` (the march over a worn gap) serve
 //! wear. It never holds code of its own, only declarations and re-exports.
 
+// Without the `sub-cell` feature nothing calls the located boundaries (`marcher.rs`).
+#[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
 mod boundary;
 mod cycles;
 mod dissipation;
+#[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
 mod evaluate;
 pub(crate) mod gap;
 mod kernel;
