@@ -63,6 +63,7 @@ class Case:
         units: Optional[Mapping[str, str]] = None,
         left_radius: Optional[float] = None,
         right_radius: Optional[float] = None,
+        sub_cell_boundaries: Optional[bool] = None,
     ) -> Case: ...
     @staticmethod
     def from_toml(text: str, base_dir: Union[None, str, PathLike[str]] = None) -> Case: ...

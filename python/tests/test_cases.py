@@ -94,6 +94,28 @@ def test_result_attributes_mirror_the_json():
         result.regime = "x"
 
 
+def test_sub_cell_boundaries_keyword_is_the_solver_field_and_reaches_the_march():
+    # Cattaneo-Mindlin: P = 1000 pressed, then Q = 0.5 f P; the stick zone is
+    # c = a sqrt(1 - Q/(f P)) (Johnson, Contact Mechanics, 7.1). Located inside their cells the
+    # boundaries are within 0.05 cells of it (issue 20's target; 0.005 measured at 400 cells);
+    # at cell edges 0.58 cells off, so the keyword must reach the solver for this to pass.
+    contact = {k: v for k, v in REFERENCE.items() if not k.startswith("point")}
+    rows = [[1000.0, 0.0, 0.0], [1000.0, 300.0, 0.0]]
+    errors = []
+    for on in (False, True):
+        case = halfplane.Case(**contact, history=rows, cells=400, sub_cell_boundaries=on)
+        assert f"sub_cell_boundaries = {str(on).lower()}" in case.to_toml()
+        assert halfplane.Case.from_toml(case.to_toml()) == case
+        marched = halfplane.march(case)
+        last = marched.steps.iloc[-1]
+        c = last["half_width"] * np.sqrt(1.0 - 300.0 / (0.6 * 1000.0))
+        width = marched.x[1] - marched.x[0]
+        errors.append(max(abs(last["stick_left"] + c), abs(last["stick_right"] - c)) / width)
+    assert errors[0] > 0.1 and errors[1] < 0.05, errors
+    with pytest.raises(TypeError, match="sub_cell_boundaries"):
+        halfplane.Case(**contact, history=rows, sub_cell_boundaries=3)
+
+
 @pytest.mark.parametrize(
     "change, field",
     [

@@ -183,7 +183,7 @@ impl PyCase {
     #[pyo3(signature = (*, youngs_modulus, poisson_ratio, friction, profile, radius=None,
         flat_half_width=None, coefficient=None, exponent=None, table=None, kinks=None,
         point1=None, point2=None, history=None, cells=None, slip_tolerance=None, units=None,
-        left_radius=None, right_radius=None))]
+        left_radius=None, right_radius=None, sub_cell_boundaries=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -205,6 +205,7 @@ impl PyCase {
         units: Option<Bound<'_, PyAny>>,
         left_radius: Option<f64>,
         right_radius: Option<f64>,
+        sub_cell_boundaries: Option<bool>,
     ) -> PyResult<Self> {
         let mut doc = toml::Table::new();
         let m = section(&mut doc, "material");
@@ -296,13 +297,16 @@ impl PyCase {
                 section(&mut doc, "history").insert("data".into(), csv_table(header, &rows).into());
             }
         }
-        if cells.is_some() || slip_tolerance.is_some() {
+        if cells.is_some() || slip_tolerance.is_some() || sub_cell_boundaries.is_some() {
             let s = section(&mut doc, "solver");
             if let Some(n) = cells {
                 s.insert("cells".into(), n.into());
             }
             if let Some(t) = slip_tolerance {
                 s.insert("slip_tolerance".into(), t.into());
+            }
+            if let Some(on) = sub_cell_boundaries {
+                s.insert("sub_cell_boundaries".into(), on.into());
             }
         }
         if let Some(u) = units {

@@ -118,6 +118,9 @@ struct RawHarmonic {
 struct RawSolver {
     cells: Option<RawCount>,
     slip_tolerance: Option<f64>,
+    /// Any TOML value, checked when resolved so that `= 3` or `= "yes"` is an error naming the
+    /// field (serde's own message would say only "expected a boolean").
+    sub_cell_boundaries: Option<toml::Value>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -358,6 +361,18 @@ impl std::fmt::Display for FieldError {
 
 impl std::error::Error for FieldError {}
 
+/// A switch of the case: `true` or `false`, anything else an error naming the field and value.
+fn flag(value: &toml::Value, field: &str) -> Result<bool> {
+    match value {
+        toml::Value::Boolean(on) => Ok(*on),
+        other => Err(FieldError {
+            field: field.into(),
+            message: format!("invalid {field} = {other}: must be true or false"),
+        }
+        .into()),
+    }
+}
+
 fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
     value.ok_or_else(|| {
         FieldError {
@@ -442,6 +457,9 @@ pub fn parse(text: &str, dir: &Path) -> Result<Case> {
         }
         if let Some(t) = raw_solver.slip_tolerance {
             solver = solver.with_slip_tolerance(t)?;
+        }
+        if let Some(v) = &raw_solver.sub_cell_boundaries {
+            solver = solver.with_sub_cell_boundaries(flag(v, "solver.sub_cell_boundaries")?)?;
         }
     }
     // Resolved now so that every command reports a bad [history], required only by `march`.
