@@ -141,6 +141,22 @@ pub fn march_seconds(cells: usize, increments: usize) -> f64 {
     march_units(cells, increments) * MARCH_SECONDS_PER_UNIT
 }
 
+/// How many times the cell-level march's cost a march with `sub_cell_boundaries` may take: 14,
+/// the largest measured (the reference cycle at 400 cells, every increment with two boundaries
+/// to locate; Cattaneo 2-4 times; BENCHMARKS.md, "Stick-slip boundaries inside their cells").
+pub const SUB_CELL_COST_FACTOR: f64 = 14.0;
+
+/// [`march_seconds`] for a march with `options`: times [`SUB_CELL_COST_FACTOR`] when its
+/// stick-slip boundaries are located inside their cells.
+pub fn march_seconds_with(options: &MarchOptions, increments: usize) -> f64 {
+    let factor = if options.sub_cell() {
+        SUB_CELL_COST_FACTOR
+    } else {
+        1.0
+    };
+    march_seconds(options.cells(), increments) * factor
+}
+
 /// The increments a march will solve at most: the history's, or for a march until the cycle
 /// repeats (`history.cycles = "steady"`), its ramp and `max_cycles` cycles.
 pub fn planned_increments(history: &History, until_steady: Option<&Steady>) -> usize {
@@ -164,10 +180,15 @@ pub fn check_march(
     check(
         format!("{cells_field} with {increments} increments of [history]"),
         Quantity::CoreTime,
-        march_seconds(cells, increments),
+        march_seconds_with(options, increments),
         format!(
-            "cells² x increments = {} at {MARCH_SECONDS_PER_UNIT:e} s each",
-            sci(march_units(cells, increments))
+            "cells² x increments = {} at {MARCH_SECONDS_PER_UNIT:e} s each{}",
+            sci(march_units(cells, increments)),
+            if options.sub_cell() {
+                format!(", x {SUB_CELL_COST_FACTOR} for solver.sub_cell_boundaries")
+            } else {
+                String::new()
+            }
         ),
     )
 }
@@ -312,5 +333,22 @@ mod tests {
         for part in ["sweep.samples = 7", "200.0 GB", "basis", "100.0 GB"] {
             assert!(text.contains(part), "{text}");
         }
+    }
+
+    #[test]
+    fn located_boundaries_raise_the_march_estimate() {
+        // 4000 cells and 400 000 increments: 3200 s of the cell-level march, under the 8 h
+        // limit, and 14 times that, over it.
+        let off = MarchOptions::default().with_cells(4000).unwrap();
+        let on = off.with_sub_cell_boundaries(true).unwrap();
+        let n = 400_000;
+        assert_eq!(march_seconds_with(&off, n), march_seconds(4000, n));
+        assert_eq!(
+            march_seconds_with(&on, n),
+            SUB_CELL_COST_FACTOR * march_seconds(4000, n)
+        );
+        assert!(check_march(n, &off, "solver.cells = 4000").is_ok());
+        let e = check_march(n, &on, "solver.cells = 4000").expect_err("14 x 3200 s");
+        assert!(e.to_string().contains("solver.sub_cell_boundaries"), "{e}");
     }
 }

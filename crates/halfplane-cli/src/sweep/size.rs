@@ -70,7 +70,7 @@ fn row_seconds(spec: &Spec, dir: &Path, direct: bool) -> f64 {
         .and_then(|c| {
             let history = c.history().ok()?;
             let increments = history.loads().len();
-            let mut seconds = limits::march_seconds(c.solver.cells(), increments);
+            let mut seconds = limits::march_seconds_with(&c.solver, increments);
             if spec.analysis == Analysis::Crack {
                 let lengths = c.crack().ok()?.lengths().len();
                 let per_cycle = history.cycles()?.steps_per_cycle();
