@@ -398,6 +398,33 @@ fn a_march_sweep_too_long_to_run_is_refused_and_names_its_largest_case() {
     );
 }
 
+#[test]
+fn a_wear_sweep_is_estimated_by_its_bound_on_marched_cycles() {
+    let dir = scratch("limits-wear-sweep");
+    // The partial-slip example (400 cells, a ramp of 10 and cycles of 40 increments, 1e6 cycles,
+    // 7 checkpoints, the default bound 0.01), 2000 rows. The cycles a row marches are not known
+    // before it runs: the estimate takes min(1e6, 100 / 0.01 + 7) = 10007 marched cycles, each
+    // 400² x 40 x 5e-10 s = 3.2 ms, plus the ramp and the case: 32.02 s a row, 17.8 hours in all
+    // (the run itself marches 78 cycles a row).
+    let base = std::fs::read_to_string(example("wear-partial-slip.toml")).unwrap();
+    let path = dir.join("spec.toml");
+    std::fs::write(
+        &path,
+        format!("{base}[sweep]\nmode = \"grid\"\nanalysis = \"wear\"\n[sweep.vary]\n\"wear.coefficient\" = {{ from = 1e-8, to = 1e-7, count = 2000 }}\n"),
+    )
+    .unwrap();
+    let out = dir.join("out.csv");
+    let o = run_briefly(&["sweep", path.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_refused(
+        &o,
+        &[
+            "the grid's 2000 rows",
+            "17.8 hours",
+            "100 / max_depth_increment cycles",
+        ],
+    );
+}
+
 /// A steady grid of 20,000 rows: about 4 MB of CSV, more than the writer's 1 MB buffer, so
 /// writes fail part-way when the output is a full disk.
 const MID_SIZE_GRID: &str = "[sweep]\nmode = \"grid\"\n[sweep.vary]\n\"cycle.point1.normal\" = { from = 900.0, to = 1100.0, count = 20000 }\n";

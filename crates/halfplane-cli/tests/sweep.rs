@@ -1,6 +1,6 @@
 //! End-to-end tests of `halfplane sweep`: a grid against the Hertz closed form, shards against
-//! the whole sweep, seeds, a march sweep against `halfplane march`, the Figure-5 spec against the
-//! library's slip map, and bad specs.
+//! the whole sweep, seeds, a march sweep against `halfplane march`, a wear sweep against
+//! `halfplane wear`, the Figure-5 spec against the library's slip map, and bad specs.
 
 mod common;
 use common::{example, run, scratch, stderr, REFERENCE_CASE, REFERENCE_CONTACT};
@@ -282,6 +282,145 @@ fn a_crack_sweep_records_verdict_and_arrest_length_as_the_crack_command() {
         verdicts.push(row[11].clone());
     }
     assert_eq!(verdicts, ["propagates", "arrests"]);
+}
+
+/// The number `key` holds in pretty-printed JSON `text` (its first occurrence), as written: read
+/// with Rust's exact parser rather than serde_json's fast one, so a value compares bit for bit.
+/// `None` for `null`.
+fn json_number(text: &str, key: &str) -> Option<f64> {
+    let at = text
+        .find(&format!("\"{key}\": "))
+        .unwrap_or_else(|| panic!("no {key} in {text}"));
+    let value = text[at + key.len() + 4..]
+        .split([',', '\n', '}'])
+        .next()
+        .unwrap()
+        .trim();
+    (value != "null").then(|| num(value))
+}
+
+#[test]
+fn a_wear_sweep_records_the_last_checkpoint_as_the_wear_command() {
+    // The partial-slip example over 1000 cycles on 200 cells, a 2 x 2 grid over the wear
+    // coefficient and the cycle's Q: each row's wear columns equal the last checkpoint of
+    // `halfplane wear --json` on the row's case written out, bit for bit (the same code on the
+    // same case; both outputs print the shortest round-trip form). A negative coefficient fails
+    // the wear run alone: its rows keep the steady columns and carry the error.
+    let base = std::fs::read_to_string(example("wear-partial-slip.toml"))
+        .unwrap()
+        .replace("cycles = 1000000", "cycles = 1000")
+        .replace("checkpoints = 7 ", "checkpoints = 4 ")
+        .replace("cells = 400", "cells = 200");
+    assert!(base.contains("cycles = 1000\n") && base.contains("cells = 200"));
+    let dir = scratch("sweep-wear");
+    let spec = format!(
+        "{base}[sweep]\nmode = \"grid\"\nanalysis = \"wear\"\n[sweep.vary]\n\"wear.coefficient\" = [3e-8, 1e-7, -1e-8]\n\"cycle.point2.shear\" = [200.0, 300.0]\n"
+    );
+    let table = rows(&sweep(&dir, &spec, "wear.csv", &[]));
+    let names = [
+        "wear_volume",
+        "max_depth",
+        "energy_per_cycle",
+        "dissipated_energy",
+        "contact_left",
+        "contact_right",
+        "peak_pressure",
+        "stick_left",
+        "stick_right",
+        "slip_amplitude_max",
+    ];
+    assert_eq!(
+        table[0][11..].join(","),
+        "error,wear.wear_volume,wear.max_depth,wear.energy_per_cycle,wear.dissipated_energy,\
+         wear.contact_left,wear.contact_right,wear.peak_pressure,wear.stick_left,wear.stick_right,\
+         wear.slip_amplitude_max,wear.simulated_cycles"
+    );
+    assert_eq!(table.len(), 7);
+    let mut volumes = Vec::new();
+    for row in &table[1..] {
+        let (k, q) = (&row[0], &row[1]);
+        assert_eq!(row[2], "partial-slip", "k = {k}, Q2 = {q}");
+        if num(k) < 0.0 {
+            assert!(
+                row[11].starts_with("wear: invalid wear.coefficient = -1e-8"),
+                "{}",
+                row[11]
+            );
+            assert!(row[12..].iter().all(String::is_empty), "{row:?}");
+            continue;
+        }
+        assert!(row[11].is_empty(), "k = {k}, Q2 = {q}: {}", row[11]);
+        let case_path = dir.join(format!("case-{k}-{q}.toml"));
+        let case = base
+            .replace("coefficient = 3e-8", &format!("coefficient = {:?}", num(k)))
+            .replace(
+                "point2 = { normal = 1000.0, shear = 300.0",
+                &format!("point2 = {{ normal = 1000.0, shear = {:?}", num(q)),
+            );
+        std::fs::write(&case_path, case).unwrap();
+        let o = run(&["wear", case_path.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let json = String::from_utf8(o.stdout).unwrap();
+        let parsed: serde_json::Value = serde_json::from_str(&json).unwrap();
+        let checkpoints = parsed["checkpoints"].as_array().unwrap();
+        assert_eq!(checkpoints.len(), 4);
+        assert_eq!(checkpoints.last().unwrap()["cycle"], 1000);
+        // The last checkpoint's object is the text after the last "cycle".
+        let last = &json[json.rfind("\"cycle\": ").unwrap()..];
+        for (name, cell) in names.iter().zip(&row[12..22]) {
+            let want = json_number(last, name);
+            let got = Some(cell).filter(|c| !c.is_empty()).map(|c| num(c));
+            assert_eq!(got, want, "k = {k}, Q2 = {q}: {name}");
+        }
+        assert_eq!(row[22], parsed["simulated_cycles"].to_string());
+        assert!(num(&row[12]) > 0.0, "k = {k}, Q2 = {q}: partial slip wears");
+        volumes.push(num(&row[12]));
+    }
+    // Rows are in grid order (the first path slowest): a larger k wears more at either Q.
+    assert!(
+        volumes[2] > volumes[0] && volumes[3] > volumes[1],
+        "{volumes:?}"
+    );
+}
+
+#[cfg(feature = "parquet")]
+#[test]
+fn a_wear_sweep_writes_the_same_rows_to_parquet_as_to_csv() {
+    use halfplane_cli::sweep::read::{read, Values};
+    use halfplane_cli::sweep::WEAR_COLUMNS;
+    // Solved rows and failed ones (k < 0): every wear column read back from Parquet equals the
+    // CSV's (numbers exactly, empty cells as nulls), wear.simulated_cycles included (UInt64).
+    let base = std::fs::read_to_string(example("wear-partial-slip.toml"))
+        .unwrap()
+        .replace("cycles = 1000000", "cycles = 100")
+        .replace("cells = 400", "cells = 100");
+    let dir = scratch("sweep-wear-parquet");
+    let spec = format!(
+        "{base}[sweep]\nmode = \"grid\"\nanalysis = \"wear\"\n[sweep.vary]\n\"wear.coefficient\" = [-1e-8, 3e-8, 1e-7]\n"
+    );
+    sweep(&dir, &spec, "out.csv", &[]);
+    sweep(&dir, &spec, "out.parquet", &[]);
+    let mut columns = vec!["wear.coefficient", "error"];
+    columns.extend(WEAR_COLUMNS);
+    let csv = read(&dir.join("out.csv"), &columns).unwrap();
+    let parquet = read(&dir.join("out.parquet"), &columns).unwrap();
+    assert_eq!(csv.rows, 3);
+    assert_eq!(csv.names, parquet.names);
+    for (k, name) in columns.iter().enumerate() {
+        match (&csv.columns[k], &parquet.columns[k]) {
+            (Values::Number(a), Values::Number(b)) => {
+                assert_eq!(a, b, "{name}");
+                if k >= 2 {
+                    assert!(
+                        a[0].is_none() && a[1..].iter().all(Option::is_some),
+                        "{name}: {a:?}"
+                    );
+                }
+            }
+            (Values::Text(a), Values::Text(b)) => assert_eq!(a, b, "{name}"),
+            (a, b) => panic!("{name}: {a:?} vs {b:?}"),
+        }
+    }
 }
 
 #[cfg(feature = "plot")] // draws a figure

@@ -157,6 +157,18 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
             s.push(',');
         }
     }
+    if layout.analysis == Analysis::Wear {
+        match &outcome.wear {
+            Some(w) => {
+                for v in w.numbers() {
+                    s.push(',');
+                    num(&mut s, v.unwrap_or(f64::NAN));
+                }
+                let _ = write!(s, ",{}", w.simulated_cycles);
+            }
+            None => s.push_str(",,,,,,,,,,,"),
+        }
+    }
     s.push('\n');
     s
 }

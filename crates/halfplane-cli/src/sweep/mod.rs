@@ -5,8 +5,8 @@
 //! are solved on every core by the library's batch engine and handed over in order, chunk by
 //! chunk, to a writer ([`csv`], or Parquet with the `parquet` feature, on by default), so output of any length
 //! is streamed. Column names are a public interface: the varied paths as written, then
-//! [`STEADY_COLUMNS`], then (march sweeps) [`MARCH_COLUMNS`] or (crack sweeps)
-//! [`CRACK_COLUMNS`].
+//! [`STEADY_COLUMNS`], then (march sweeps) [`MARCH_COLUMNS`], (crack sweeps) [`CRACK_COLUMNS`]
+//! or (wear sweeps) [`WEAR_COLUMNS`].
 
 pub mod csv;
 #[cfg(feature = "parquet")]
@@ -39,6 +39,7 @@ impl Layout {
         match self.analysis {
             Analysis::March => out.extend(MARCH_COLUMNS.iter().map(|c| c.to_string())),
             Analysis::Crack => out.extend(CRACK_COLUMNS.iter().map(|c| c.to_string())),
+            Analysis::Wear => out.extend(WEAR_COLUMNS.iter().map(|c| c.to_string())),
             Analysis::Steady => {}
         }
         out
@@ -48,6 +49,23 @@ impl Layout {
 /// The columns a crack sweep adds: the verdict (`arrests`, `propagates`, `no-growth`) and the
 /// arrest length (empty unless the crack arrests), as `halfplane crack --json` names them.
 pub const CRACK_COLUMNS: [&str; 2] = ["crack.verdict", "crack.arrest_length"];
+
+/// The columns a wear sweep adds: the last checkpoint's quantities (the cycle `[wear] cycles`)
+/// as `halfplane wear --json` names them (the stick ends empty in gross sliding), and the cycles
+/// marched.
+pub const WEAR_COLUMNS: [&str; 11] = [
+    "wear.wear_volume",
+    "wear.max_depth",
+    "wear.energy_per_cycle",
+    "wear.dissipated_energy",
+    "wear.contact_left",
+    "wear.contact_right",
+    "wear.peak_pressure",
+    "wear.stick_left",
+    "wear.stick_right",
+    "wear.slip_amplitude_max",
+    "wear.simulated_cycles",
+];
 
 /// Where a sweep's rows go: each row is encoded on a worker thread ([`RowSink::encode`]), and
 /// the encoded rows of a chunk are written in row order ([`RowSink::write`]).

@@ -1,6 +1,6 @@
 //! Parquet output of a sweep (the `parquet` feature): the same columns as the CSV, typed. The
 //! varied paths and the numbers are `Float64`, `regime`, `error` and `crack.verdict` are `Utf8`,
-//! `shakedown_cycle` and `cycles_run` are `UInt64`, `steady_converged` is `Boolean`; a value the row does not have is null (never NaN), and `error`
+//! `shakedown_cycle`, `cycles_run` and `wear.simulated_cycles` are `UInt64`, `steady_converged` is `Boolean`; a value the row does not have is null (never NaN), and `error`
 //! is null when the row succeeded. Each chunk of rows is written as it arrives; row groups hold
 //! at most [`ROW_GROUP_ROWS`] rows, so memory stays bounded whatever the sweep's length.
 
@@ -47,7 +47,7 @@ pub fn schema(layout: &Layout) -> Schema {
     for name in &layout.columns()[layout.varied.len()..] {
         let kind = match name.as_str() {
             "regime" | "error" | "crack.verdict" => DataType::Utf8,
-            "shakedown_cycle" | "cycles_run" => DataType::UInt64,
+            "shakedown_cycle" | "cycles_run" | "wear.simulated_cycles" => DataType::UInt64,
             "steady_converged" => DataType::Boolean,
             _ => DataType::Float64,
         };
@@ -151,6 +151,25 @@ impl ParquetSink {
             }
             columns.push(Arc::new(verdict.finish()));
             columns.push(Arc::new(arrest.finish()));
+        }
+        if self.layout.analysis == Analysis::Wear {
+            for k in 0..10 {
+                let mut b = Float64Builder::with_capacity(n);
+                for r in rows {
+                    b.append_option(
+                        r.outcome
+                            .wear
+                            .and_then(|w| w.numbers()[k])
+                            .filter(|v| v.is_finite()),
+                    );
+                }
+                columns.push(Arc::new(b.finish()));
+            }
+            let mut simulated = UInt64Builder::with_capacity(n);
+            for r in rows {
+                simulated.append_option(r.outcome.wear.map(|w| w.simulated_cycles as u64));
+            }
+            columns.push(Arc::new(simulated.finish()));
         }
         RecordBatch::try_new(self.schema.clone(), columns)
             .map_err(|e| anyhow!("cannot assemble the rows for {}: {e}", self.part.display()))

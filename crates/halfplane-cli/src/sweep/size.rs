@@ -4,10 +4,13 @@
 //! A march sweep's rows are bounded by its largest case: the whole-number fields it varies
 //! (`solver.cells`, `history.cycles`, steps) at the largest values they take, since cells and
 //! increments only grow with them.
+//!
+//! A wear sweep's rows march an unknown number of cycles (the jumps are chosen as the run goes),
+//! so its estimate assumes a bound on the cycles marched ([`wear_marched_cycles`]).
 
 use super::spec::{Analysis, Spec};
 use super::template::{number, set};
-use crate::case;
+use crate::case::{self, Case};
 use crate::commands::sweep::OutputFormat;
 use crate::limits::{self, Quantity, TooLarge};
 use std::path::Path;
@@ -32,6 +35,7 @@ pub fn output_bytes(spec: &Spec, rows: u64, format: OutputFormat) -> f64 {
     match spec.analysis {
         Analysis::March => numbers += 5,
         Analysis::Crack => numbers += 2,
+        Analysis::Wear => numbers += 11,
         Analysis::Steady => {}
     }
     let per = match format {
@@ -66,6 +70,9 @@ fn row_seconds(spec: &Spec, dir: &Path, direct: bool) -> f64 {
                 .ok()
                 .and_then(|t| case::parse(&t, dir).ok())
         });
+    if spec.analysis == Analysis::Wear {
+        return limits::REREAD_ROW_SECONDS + largest.as_ref().and_then(wear_seconds).unwrap_or(0.0);
+    }
     let march = largest
         .and_then(|c| {
             let history = c.history().ok()?;
@@ -80,6 +87,46 @@ fn row_seconds(spec: &Spec, dir: &Path, direct: bool) -> f64 {
         })
         .unwrap_or(0.0);
     limits::REREAD_ROW_SECONDS + march
+}
+
+/// The cycles a wear run marches per unit of `1 / max_depth_increment`, at most: 100, so 10 000
+/// at the default bound 0.01. Measured: 78 cycles marched for the partial-slip example (1e6
+/// cycles, 400 cells), 2886 for the 1e6-cycle gross-sliding one at the bound 0.02 (58 per unit),
+/// 6587 for the 800-cell sliding comparison of docs/wear.md (BENCHMARKS.md, "Wear").
+pub const WEAR_MARCHED_CYCLES_PER_UNIT: f64 = 100.0;
+
+/// How many times the march model's cost a gross-sliding cycle takes: 10 (measured 15 ms a cycle
+/// at 400 cells, 10 increments per half, against the model's 1.6 ms: Q reverses through a
+/// Mindlin reversal in which the slip zones sweep the whole contact).
+pub const SLIDING_COST_FACTOR: f64 = 10.0;
+
+/// The cycles a wear run with `options` is assumed to march: every cycle, or
+/// [`WEAR_MARCHED_CYCLES_PER_UNIT`] / `max_depth_increment` plus one per checkpoint (jumps end on
+/// each), whichever is fewer. A bound, not a prediction: a settled partial-slip contact marches
+/// a hundred times fewer.
+pub fn wear_marched_cycles(options: &halfplane::wear::WearOptions) -> f64 {
+    let bound = WEAR_MARCHED_CYCLES_PER_UNIT / options.max_depth_increment()
+        + options.checkpoints().len() as f64;
+    (options.cycles() as f64).min(bound)
+}
+
+/// The core time of one wear row: the ramp, then [`wear_marched_cycles`] cycles, each at the
+/// march model's cost of its increments (times [`SLIDING_COST_FACTOR`] in gross sliding).
+fn wear_seconds(c: &Case) -> Option<f64> {
+    let settings = c.wear().ok()?;
+    let (ramp, per_cycle, factor) = match &c.sliding {
+        // Q rises and falls over 2 x steps_per_half increments each way, with a slide at each end.
+        Some(s) => (s.ramp_steps, 4 * s.steps_per_half + 2, SLIDING_COST_FACTOR),
+        None => {
+            let cycles = c.history().ok()?.cycles()?;
+            (cycles.first_step(), cycles.steps_per_cycle(), 1.0)
+        }
+    };
+    let cycle = limits::march_seconds_with(&c.solver, per_cycle) * factor;
+    Some(
+        limits::march_seconds_with(&c.solver, ramp)
+            + wear_marched_cycles(&settings.options) * cycle,
+    )
 }
 
 /// Where a sweep's rows go, and how its rows are solved.
@@ -122,6 +169,14 @@ pub fn check(spec: &Spec, dir: &Path, run: Run) -> Result<(), TooLarge> {
             "{} rows at {} each, the march of the largest case at {} s per cell² x increment",
             limits::sci(rows as f64),
             limits::duration(per_row),
+            limits::MARCH_SECONDS_PER_UNIT
+        ),
+        Analysis::Wear => format!(
+            "{} rows at {} each: the largest case's ramp and at most {} / max_depth_increment cycles \
+             marched (all of [wear] cycles when fewer), at {:e} s per cell² x increment",
+            limits::sci(rows as f64),
+            limits::duration(per_row),
+            WEAR_MARCHED_CYCLES_PER_UNIT,
             limits::MARCH_SECONDS_PER_UNIT
         ),
     };

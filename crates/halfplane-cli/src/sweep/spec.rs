@@ -17,6 +17,9 @@ pub enum Analysis {
     /// The crack of the case's `[crack]` over the steady cycle of its `[history]` (its verdict
     /// and arrest length: a crack-arrest map), plus the steady state when it has a `[cycle]`.
     Crack,
+    /// Fretting wear of the case's `[wear]` over its `[history]` cycle (`halfplane wear`),
+    /// recorded at the last checkpoint, plus the steady state when it has a `[cycle]`.
+    Wear,
 }
 
 /// A varied field: its dotted path as written, the path's keys, and whether the case writes it
@@ -84,8 +87,9 @@ pub fn parse(text: &str) -> Result<Spec> {
         Some(Value::String(s)) if s == "steady" => Analysis::Steady,
         Some(Value::String(s)) if s == "march" => Analysis::March,
         Some(Value::String(s)) if s == "crack" => Analysis::Crack,
+        Some(Value::String(s)) if s == "wear" => Analysis::Wear,
         Some(other) => {
-            bail!("invalid sweep.analysis = {other}: must be \"steady\" (the default), \"march\" or \"crack\"")
+            bail!("invalid sweep.analysis = {other}: must be \"steady\" (the default), \"march\", \"crack\" or \"wear\"")
         }
     };
     let vary = match sweep.get("vary") {

@@ -72,6 +72,8 @@ pub struct Outcome {
     pub march: Option<MarchSummary>,
     /// The crack's verdict (crack sweeps only; absent when it failed).
     pub crack: Option<CrackSummary>,
+    /// The wear run's last checkpoint (wear sweeps only; absent when it failed).
+    pub wear: Option<WearSummary>,
     /// Empty when the row succeeded; otherwise the error (in a march sweep, prefixed by the
     /// analysis that failed, `steady:` or `march:`, joined by `; `).
     pub error: String,
@@ -84,6 +86,50 @@ pub struct CrackSummary {
     pub verdict: Verdict,
     /// The arrest length when it arrests.
     pub arrest_length: Option<f64>,
+}
+
+/// A wear run (`halfplane wear`) in its last checkpoint, the cycle `[wear] cycles`, and the
+/// cycles it marched.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WearSummary {
+    /// Volume removed from both bodies per unit thickness.
+    pub wear_volume: f64,
+    /// The largest depth (both bodies).
+    pub max_depth: f64,
+    /// Energy dissipated in the last cycle (per unit thickness).
+    pub energy_per_cycle: f64,
+    /// Energy dissipated over all the cycles.
+    pub dissipated_energy: f64,
+    /// The contact's ends.
+    pub contact: [f64; 2],
+    /// The largest pressure.
+    pub peak_pressure: f64,
+    /// The permanent stick zone of the last cycle; `None` in gross sliding.
+    pub stick: Option<[f64; 2]>,
+    /// The largest slip amplitude in the last cycle.
+    pub slip_amplitude_max: f64,
+    /// Cycles marched (the others were jumped over).
+    pub simulated_cycles: usize,
+}
+
+impl WearSummary {
+    /// The numbers of `wear.wear_volume` to `wear.slip_amplitude_max`, in column order (the
+    /// stick ends `None` in gross sliding).
+    pub fn numbers(&self) -> [Option<f64>; 10] {
+        let stick = self.stick;
+        [
+            Some(self.wear_volume),
+            Some(self.max_depth),
+            Some(self.energy_per_cycle),
+            Some(self.dissipated_energy),
+            Some(self.contact[0]),
+            Some(self.contact[1]),
+            Some(self.peak_pressure),
+            stick.map(|z| z[0]),
+            stick.map(|z| z[1]),
+            Some(self.slip_amplitude_max),
+        ]
+    }
 }
 
 /// The resolved case of a sweep and how each row's case is made from it.
@@ -117,11 +163,16 @@ impl Template {
                 base.fatigue()?;
                 base.history()?;
             }
+            Analysis::Wear => {
+                // Marches the ramp once, so a case `halfplane wear` would refuse (a history of
+                // more than one cycle, no [wear]) is refused before the first row.
+                base.worn_march(base.wear()?.span, None)?;
+            }
             _ => {}
         }
         let slots: Option<Vec<Slot>> = match spec.analysis {
             Analysis::Steady => spec.varied.iter().map(|v| slot(&v.keys)).collect(),
-            Analysis::March | Analysis::Crack => None,
+            Analysis::March | Analysis::Crack | Analysis::Wear => None,
         };
         let direct = slots.zip(base.cycle);
         Ok(Self {
@@ -160,6 +211,7 @@ impl Template {
                         steady: Some(summary),
                         march: None,
                         crack: None,
+                        wear: None,
                         error: String::new(),
                     },
                     Err(e) => failed(e.to_string()),
@@ -309,6 +361,7 @@ impl Template {
                     steady: Some(summary),
                     march: None,
                     crack: None,
+                    wear: None,
                     error: String::new(),
                 },
                 Some(Err(e)) => failed(e.to_string()),
@@ -338,6 +391,7 @@ impl Template {
                     steady,
                     march,
                     crack: None,
+                    wear: None,
                     error: errors.join("; "),
                 }
             }
@@ -356,6 +410,25 @@ impl Template {
                     steady,
                     march: None,
                     crack,
+                    wear: None,
+                    error: errors.join("; "),
+                }
+            }
+            Analysis::Wear => {
+                let mut errors = Vec::new();
+                let steady = kept(steady, &mut errors);
+                let wear = match wear_summary(case) {
+                    Ok(w) => Some(w),
+                    Err(e) => {
+                        errors.push(format!("wear: {e:#}"));
+                        None
+                    }
+                };
+                Outcome {
+                    steady,
+                    march: None,
+                    crack: None,
+                    wear,
                     error: errors.join("; "),
                 }
             }
@@ -391,11 +464,35 @@ fn crack_summary(case: &Case) -> Result<CrackSummary> {
     })
 }
 
+/// `halfplane wear` on a case read for the row: its last checkpoint and the cycles it marched.
+/// A run that stops part way is the row's error (its earlier checkpoints are not recorded).
+fn wear_summary(case: &Case) -> Result<WearSummary> {
+    let settings = case.wear()?;
+    let mut worn = case.worn_march(settings.span, None)?;
+    let result = halfplane::wear::run(&mut worn, &settings.options, |_| {})?;
+    let last = result
+        .checkpoints
+        .last()
+        .ok_or_else(|| anyhow::anyhow!("the wear run reached no checkpoint"))?;
+    Ok(WearSummary {
+        wear_volume: last.wear_volume,
+        max_depth: last.max_depth,
+        energy_per_cycle: last.energy_per_cycle,
+        dissipated_energy: last.dissipated_energy,
+        contact: last.contact,
+        peak_pressure: last.peak_pressure,
+        stick: last.stick,
+        slip_amplitude_max: last.slip_amplitude_max,
+        simulated_cycles: result.simulated_cycles,
+    })
+}
+
 fn failed(error: String) -> Outcome {
     Outcome {
         steady: None,
         march: None,
         crack: None,
+        wear: None,
         error,
     }
 }
