@@ -15,6 +15,8 @@
 
 use super::spec::{Analysis, Spec, Varied};
 use crate::case::{self, Case};
+use crate::report::wear::WearRow;
+use crate::report::Cell;
 use anyhow::{bail, Result};
 use halfplane::batch::{self, MarchSummary, SteadySummary};
 use halfplane::crack::Verdict;
@@ -92,43 +94,22 @@ pub struct CrackSummary {
 /// cycles it marched.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WearSummary {
-    /// Volume removed from both bodies per unit thickness.
-    pub wear_volume: f64,
-    /// The largest depth (both bodies).
-    pub max_depth: f64,
-    /// Energy dissipated in the last cycle (per unit thickness).
-    pub energy_per_cycle: f64,
-    /// Energy dissipated over all the cycles.
-    pub dissipated_energy: f64,
-    /// The contact's ends.
-    pub contact: [f64; 2],
-    /// The largest pressure.
-    pub peak_pressure: f64,
-    /// The permanent stick zone of the last cycle; `None` in gross sliding.
-    pub stick: Option<[f64; 2]>,
-    /// The largest slip amplitude in the last cycle.
-    pub slip_amplitude_max: f64,
+    /// `wear.wear_volume` to `wear.slip_amplitude_max`: the wear report's columns after `cycle`
+    /// ([`WearRow::COLUMNS`]), `None` where the report leaves a cell empty (the stick ends in
+    /// gross sliding).
+    numbers: [Option<f64>; WEAR_NUMBERS],
     /// Cycles marched (the others were jumped over).
     pub simulated_cycles: usize,
 }
 
+/// The wear report's columns a wear sweep records: all but `cycle`.
+const WEAR_NUMBERS: usize = WearRow::COLUMNS.len() - 1;
+
 impl WearSummary {
     /// The numbers of `wear.wear_volume` to `wear.slip_amplitude_max`, in column order (the
     /// stick ends `None` in gross sliding).
-    pub fn numbers(&self) -> [Option<f64>; 10] {
-        let stick = self.stick;
-        [
-            Some(self.wear_volume),
-            Some(self.max_depth),
-            Some(self.energy_per_cycle),
-            Some(self.dissipated_energy),
-            Some(self.contact[0]),
-            Some(self.contact[1]),
-            Some(self.peak_pressure),
-            stick.map(|z| z[0]),
-            stick.map(|z| z[1]),
-            Some(self.slip_amplitude_max),
-        ]
+    pub fn numbers(&self) -> [Option<f64>; WEAR_NUMBERS] {
+        self.numbers
     }
 }
 
@@ -474,15 +455,14 @@ fn wear_summary(case: &Case) -> Result<WearSummary> {
         .checkpoints
         .last()
         .ok_or_else(|| anyhow::anyhow!("the wear run reached no checkpoint"))?;
+    // The numbers `halfplane wear` reports for the checkpoint, read through its own columns.
+    let row = WearRow::new(last);
+    let numbers = std::array::from_fn(|k| match (WearRow::COLUMNS[k + 1].get)(&row) {
+        Cell::Num(v) => Some(v),
+        _ => None,
+    });
     Ok(WearSummary {
-        wear_volume: last.wear_volume,
-        max_depth: last.max_depth,
-        energy_per_cycle: last.energy_per_cycle,
-        dissipated_energy: last.dissipated_energy,
-        contact: last.contact,
-        peak_pressure: last.peak_pressure,
-        stick: last.stick,
-        slip_amplitude_max: last.slip_amplitude_max,
+        numbers,
         simulated_cycles: result.simulated_cycles,
     })
 }
@@ -525,6 +505,20 @@ pub(super) fn set(table: &mut Table, keys: &[String], value: Value) {
 mod tests {
     use super::*;
     use crate::sweep::spec;
+
+    #[test]
+    fn wear_columns_are_the_wear_reports_after_cycle() {
+        // The numbers come from the report's columns by position: the names must line up.
+        let report: Vec<String> = WearRow::COLUMNS[1..]
+            .iter()
+            .map(|c| format!("wear.{}", c.key))
+            .collect();
+        assert_eq!(report, crate::sweep::WEAR_COLUMNS[..WEAR_NUMBERS]);
+        assert_eq!(
+            crate::sweep::WEAR_COLUMNS[WEAR_NUMBERS..],
+            ["wear.simulated_cycles"]
+        );
+    }
 
     /// A random sweep over every number the direct route puts in, over ranges that include
     /// invalid values (negative radius, Poisson's ratio above 0.5, negative P) and gross sliding.
