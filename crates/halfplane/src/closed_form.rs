@@ -87,6 +87,68 @@ pub fn cattaneo_mindlin_stick_half_width(
     half_width * (1.0 - shear.abs() / (friction * normal)).max(0.0).sqrt()
 }
 
+/// The bodies' relative tangential displacement `delta` (pad minus specimen, datum `d`: see
+/// [`crate::march::Marcher::relative_displacement`]) of the Cattaneo-Mindlin cylinder (Hertz,
+/// contact half-width a, similar materials, composite compliance A) under constant P and Q
+/// rising monotonically from zero:
+///
+/// `delta = sign(Q) (A f P/(pi a^2)) [a^2 (ln(2d/a) + 1/2) - c^2 (ln(2d/c) + 1/2)]`,
+/// `c` = [`cattaneo_mindlin_stick_half_width`].
+///
+/// Derived here: the traction is `q = (f p0/a)[sqrt(a^2 - x^2) - sqrt(c^2 - x^2)]` (Johnson,
+/// *Contact Mechanics*, section 7.1), and for `|x| <= b`
+/// `integral_{-b}^{b} sqrt(b^2 - xi^2) ln|x - xi| dxi = (pi b^2/2)(ln(b/2) - 1/2) + pi x^2/2`
+/// (its x-derivative is the finite Hilbert transform `pi x`; the constant from
+/// `integral_0^1 sqrt(1 - t^2) ln t dt = -(pi/8)(1 + 2 ln 2)`), so the surfaces' displacement
+/// `u = (A/pi) integral q ln(|x - xi|/d) dxi` is the same at every stick point (the `x^2` terms
+/// cancel) and the stick condition `u + delta = 0` gives delta. Small Q: `delta = (A/pi) Q
+/// ln(2d/a)`, the full-stick compliance.
+pub fn cattaneo_mindlin_displacement(
+    compliance: f64,
+    half_width: f64,
+    friction: f64,
+    normal: f64,
+    shear: f64,
+    datum: f64,
+) -> f64 {
+    let a = half_width;
+    let c = cattaneo_mindlin_stick_half_width(a, friction, normal, shear);
+    let term = |b: f64| {
+        if b > 0.0 {
+            b * b * ((2.0 * datum / b).ln() + 0.5)
+        } else {
+            0.0
+        }
+    };
+    shear.signum() * compliance * friction * normal / (PI * a * a) * (term(a) - term(c))
+}
+
+/// The steady fretting loop of the Cattaneo-Mindlin cylinder between `-amplitude` and
+/// `+amplitude` of Q at constant P: on the rising branch `delta(Q) = -delta_0(Q*) + 2
+/// delta_0((Q + Q*)/2)`, on the falling one `delta(Q) = delta_0(Q*) - 2 delta_0((Q* - Q)/2)`,
+/// with `delta_0` = [`cattaneo_mindlin_displacement`] and `Q*` the amplitude (Mindlin and
+/// Deresiewicz, *J. Appl. Mech.* 20, 1953, by the superposition of Ciavarella, *Int. J. Solids
+/// Struct.* 35, 1998, and Jäger, which holds in plane strain for similar materials).
+#[allow(clippy::too_many_arguments)]
+pub fn cattaneo_mindlin_loop_displacement(
+    compliance: f64,
+    half_width: f64,
+    friction: f64,
+    normal: f64,
+    amplitude: f64,
+    shear: f64,
+    rising: bool,
+    datum: f64,
+) -> f64 {
+    let first =
+        |q: f64| cattaneo_mindlin_displacement(compliance, half_width, friction, normal, q, datum);
+    if rising {
+        -first(amplitude) + 2.0 * first(0.5 * (shear + amplitude))
+    } else {
+        first(amplitude) - 2.0 * first(0.5 * (amplitude - shear))
+    }
+}
+
 /// The normal contact `[left_end, right_end]` of a tilted flat punch with rounded edges of unequal
 /// radii, in closed form: see [`flat_rounded_tilted`].
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -14,7 +14,7 @@ use super::layout::Layout;
 use super::moments::PressureShape;
 use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
-use super::types::{Fields, LinearSolver, MarchOptions, StepReport};
+use super::types::{Fields, LinearSolver, MarchOptions, RelativeDisplacement, StepReport};
 use crate::error::{Error, Result};
 use crate::labels::{Edge, PerEdge};
 use crate::load::LoadPoint;
@@ -62,6 +62,9 @@ pub struct Marcher {
     /// The load reached by the last increment; `None` before the first (unloaded).
     load: Option<LoadPoint>,
     pub(super) energy: f64,
+    /// The bodies' relative tangential displacement, datum the kernel's scale `l`
+    /// ([`RelativeDisplacement`]).
+    displacement: f64,
     pub(super) pressure: Vec<f64>,
     /// The shear traction at each cell's centre (what is reported).
     pub(super) traction: Vec<f64>,
@@ -186,6 +189,7 @@ impl Marcher {
             step: 0,
             load: None,
             energy: 0.0,
+            displacement: 0.0,
             pressure: zeros.clone(),
             traction: zeros.clone(),
             limit_mean: zeros.clone(),
@@ -233,6 +237,12 @@ impl Marcher {
             slip_increment: &self.slip_increment,
             kinks: &self.reported_kinks,
         }
+    }
+
+    /// The relative tangential displacement of the bodies after the last increment.
+    pub fn relative_displacement(&self) -> RelativeDisplacement {
+        let shear = self.load.map_or(0.0, |l| l.shear());
+        RelativeDisplacement::new(self.displacement, self.scale, self.compliance, shear)
     }
 
     /// Cell width.
@@ -365,6 +375,7 @@ impl Marcher {
             energy_increment,
             energy: self.energy,
             passes,
+            relative_displacement: self.relative_displacement(),
         })
     }
 
@@ -536,6 +547,7 @@ impl Marcher {
         let traction_tolerance = 1e-9 * f * self.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
         let q_old_sum: f64 = self.traction.iter().sum();
         let mut passes = 0;
+        let mut shift;
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
@@ -576,6 +588,7 @@ impl Marcher {
             self.solve_stick(&Rhs::Ones, step)?;
             let (su, sv) = (self.u.iter().sum::<f64>(), self.v.iter().sum::<f64>());
             let c = (su - target) / sv;
+            shift = c;
             for i in 0..n {
                 self.dq[i] = self.known[i]
                     + if self.cells[i] == Cell::Stick {
@@ -620,6 +633,9 @@ impl Marcher {
                 break;
             }
         }
+        // Slip is `s = du - c_disp c` with du the surfaces' relative displacement (datum l):
+        // the bodies' rigid relative displacement moves by `-c_disp c`.
+        self.displacement -= c_disp * shift;
         let energy = self.dissipation(ends_start, target.ends(), step)?;
         // A worn gap's pressure is known at the cell centres only, not as the profile's closed
         // form that the located boundaries' limit moments integrate (`moments.rs`).
@@ -800,6 +816,7 @@ impl Marcher {
             energy += f * self.pressure[i] * distance.abs();
         }
         self.energy += energy * self.width;
+        self.displacement += distance;
         self.load = Some(
             LoadPoint::new(
                 "slide",

@@ -74,5 +74,7 @@ mod worn;
 pub use boundary::TractionKink;
 pub use cycles::{march, march_steady, march_steady_until, march_until};
 pub use marcher::Marcher;
-pub use types::{CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, StepReport};
+pub use types::{
+    CycleReport, Fields, LinearSolver, MarchOptions, MarchResult, RelativeDisplacement, StepReport,
+};
 pub use worn::Worn;

@@ -230,6 +230,46 @@ pub struct StepReport {
     pub energy: f64,
     /// Active-set passes used.
     pub passes: usize,
+    /// The bodies' relative tangential displacement after the increment (the fretting loop is
+    /// it against the shear load).
+    pub relative_displacement: RelativeDisplacement,
+}
+
+/// The relative tangential displacement of the bodies, pad minus specimen, positive in the sense
+/// positive Q drives: the rigid displacement `delta` in `s(x) = u(x) + delta`, s the slip and
+///
+/// `u(x) = (A/pi) integral q(xi) ln(|x - xi|/d) dxi - (A/4) sigma x`
+///
+/// the surfaces' elastic relative displacement (the log kernel the march solves with: the
+/// tangential counterpart of Johnson, *Contact Mechanics*, eq. 2.25a, summed over both bodies;
+/// the bulk stress's strain measured from x = 0). Half-plane displacements need a datum, the
+/// length `d` at which a point load's logarithm vanishes: for `d` well beyond the contact, the
+/// bodies' surface points at distance `d` from it, where the contact's traction acts as a point
+/// load. [`RelativeDisplacement::at`] takes it. Changing it adds `(A/pi) Q ln(d2/d1)`, a shear
+/// of the loop: a loop's area (the energy dissipated) and its width at Q = 0 do not depend on
+/// it. Zero unloaded and under normal load alone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RelativeDisplacement {
+    /// delta with the datum `scale`.
+    at_scale: f64,
+    scale: f64,
+    /// `(A/pi) Q`.
+    log_coefficient: f64,
+}
+
+impl RelativeDisplacement {
+    pub(super) fn new(at_scale: f64, scale: f64, compliance: f64, shear: f64) -> Self {
+        Self {
+            at_scale,
+            scale,
+            log_coefficient: compliance / std::f64::consts::PI * shear,
+        }
+    }
+
+    /// delta with the datum `datum` (a length > 0).
+    pub fn at(&self, datum: f64) -> f64 {
+        self.at_scale + self.log_coefficient * (datum / self.scale).ln()
+    }
 }
 
 impl StepReport {
