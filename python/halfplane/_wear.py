@@ -39,7 +39,12 @@ WEAR_COLUMNS: Tuple[str, ...] = (
     "stick_left",
     "stick_right",
     "slip_amplitude_max",
+    "displacement_amplitude",
 )
+
+#: The fretting loop of each checkpoint, as ``wear --fields``' ``loop_<cycle>.csv`` names its
+#: columns.
+LOOP_COLUMNS: Tuple[str, ...] = ("shear", "relative_displacement")
 
 #: The fields of each checkpoint, as ``wear --fields`` names its columns (after ``x``).
 FIELD_NAMES: Tuple[str, ...] = (
@@ -50,6 +55,10 @@ FIELD_NAMES: Tuple[str, ...] = (
     "traction",
     "slip_range",
 )
+
+
+#: The attributes holding the fretting loops, in the order of :data:`LOOP_COLUMNS`.
+_LOOP_ARRAYS: Tuple[str, ...] = ("loop_shear", "loop_relative_displacement")
 
 
 @dataclass(frozen=True, eq=False)
@@ -64,21 +73,26 @@ class WearResult(Record):
     DataFrame with the columns of ``wear --csv``: ``cycle`` (int64), ``wear_volume`` (both bodies,
     per unit thickness), ``max_depth``, ``energy_per_cycle``, ``dissipated_energy`` (cumulative),
     ``contact_left``, ``contact_right``, ``peak_pressure``, ``stick_left``, ``stick_right`` (the
-    cells that did not slip in the cycle; NaN in gross sliding) and ``slip_amplitude_max``
-    (float64; each access returns a copy).
+    cells that did not slip in the cycle; NaN in gross sliding), ``slip_amplitude_max`` and
+    ``displacement_amplitude`` (half the range of the fretting loop's relative displacement)
+    (float64; each access returns a copy). ``loop_datum`` is the length the loop's relative
+    displacement is measured from (docs/wear.md, "Fretting loop").
 
     The fields of every checkpoint (``wear --fields``): ``x`` (the cell centres, shape
     (cells,)) and ``depth`` (both bodies), ``depth_pad``, ``depth_specimen``, ``pressure`` and
     ``traction`` (at the end of the cycle) and ``slip_range`` (over it), each of shape
     (checkpoints, cells), row i for checkpoint i; :meth:`fields` gives one checkpoint's as the
     DataFrame of its ``checkpoint_<cycle>.csv``. Depths are positive into the bodies, traction
-    positive in the direction of positive Q.
+    positive in the direction of positive Q. The fretting loops: ``loop_shear`` (Q) and
+    ``loop_relative_displacement``, each of shape (checkpoints, points), the cycle's start then
+    every increment and slide; :meth:`fretting_loop` gives one checkpoint's as the DataFrame of
+    its ``loop_<cycle>.csv``.
 
     ``to_dict()`` is the ``--json`` object (``checkpoints`` as a list of row objects, null stick
     columns in gross sliding); the fields are not part of it. Read-only; it pickles. Definitions
     in docs/wear.md."""
 
-    _EXTRA: ClassVar[Tuple[str, ...]] = ("_table", *FIELD_NAMES, "x")
+    _EXTRA: ClassVar[Tuple[str, ...]] = ("_table", *FIELD_NAMES, "x", *_LOOP_ARRAYS)
 
     law: str
     coefficient: float
@@ -89,6 +103,7 @@ class WearResult(Record):
     cell_width: float
     simulated_cycles: Optional[int]
     elastic_approach: float
+    loop_datum: float
     _table: pd.DataFrame
     stopped: Optional[str]
     units: Units
@@ -99,6 +114,8 @@ class WearResult(Record):
     pressure: FloatArray
     traction: FloatArray
     slip_range: FloatArray
+    loop_shear: FloatArray
+    loop_relative_displacement: FloatArray
 
     @classmethod
     def _from(cls, data: Mapping[str, Any]) -> WearResult:
@@ -116,11 +133,12 @@ class WearResult(Record):
             cell_width=float(data["cell_width"]),
             simulated_cycles=None if simulated is None else int(simulated),
             elastic_approach=float(data["elastic_approach"]),
+            loop_datum=float(data["loop_datum"]),
             _table=_frame(data["checkpoints"], dtypes),
             stopped=None if stopped is None else str(stopped),
             units=Units._from(data["units"]),
             x=data["x"],
-            **{name: data[name] for name in FIELD_NAMES},
+            **{name: data[name] for name in (*FIELD_NAMES, *_LOOP_ARRAYS)},
         )
 
     @property
@@ -129,15 +147,28 @@ class WearResult(Record):
         copy: pd.DataFrame = self._table.copy()
         return copy
 
+    def fretting_loop(self, cycle: int) -> pd.DataFrame:
+        """The fretting loop of the checkpoint of physical cycle ``cycle``: the columns of
+        ``wear --fields``' ``loop_<cycle>.csv`` (``shear, relative_displacement``), one row per
+        point. A cycle that is not a checkpoint raises :class:`KeyError` naming those that
+        are."""
+        i = self._index(cycle)
+        return pd.DataFrame(
+            {c: getattr(self, a)[i].copy() for c, a in zip(LOOP_COLUMNS, _LOOP_ARRAYS)}
+        )
+
+    def _index(self, cycle: int) -> int:
+        cycles = [int(c) for c in self._table["cycle"]]
+        if cycle not in cycles:
+            raise KeyError(f"cycle {cycle} is not a checkpoint (checkpoints: {cycles})")
+        return cycles.index(cycle)
+
     def fields(self, cycle: int) -> pd.DataFrame:
         """The fields at the checkpoint of physical cycle ``cycle``: the columns of
         ``wear --fields``' ``checkpoint_<cycle>.csv`` (``x, depth, depth_pad, depth_specimen,
         pressure, traction, slip_range``), one row per cell. A cycle that is not a checkpoint
         raises :class:`KeyError` naming those that are."""
-        cycles = [int(c) for c in self._table["cycle"]]
-        if cycle not in cycles:
-            raise KeyError(f"cycle {cycle} is not a checkpoint (checkpoints: {cycles})")
-        i = cycles.index(cycle)
+        i = self._index(cycle)
         columns: Dict[str, FloatArray] = {"x": self.x.copy()}
         for name in FIELD_NAMES:
             columns[name] = getattr(self, name)[i].copy()
@@ -145,7 +176,7 @@ class WearResult(Record):
 
     def _keys(self) -> List[str]:
         keys = super()._keys()
-        keys.insert(keys.index("elastic_approach") + 1, "checkpoints")
+        keys.insert(keys.index("loop_datum") + 1, "checkpoints")
         return keys
 
     def __getitem__(self, key: str) -> Any:
@@ -169,7 +200,8 @@ class WearResult(Record):
             return same
         assert isinstance(other, WearResult)
         return all(
-            np.array_equal(getattr(self, n), getattr(other, n)) for n in ("x", *FIELD_NAMES)
+            np.array_equal(getattr(self, n), getattr(other, n))
+            for n in ("x", *FIELD_NAMES, *_LOOP_ARRAYS)
         )
 
     def __repr__(self) -> str:
@@ -223,6 +255,7 @@ def wear(
     checkpoints: Optional[_Checkpoints] = None,
     max_depth_increment: Optional[float] = None,
     span: Optional[float] = None,
+    loop_datum: Optional[float] = None,
 ) -> WearResult:
     """Fretting wear: the worn profiles, pressure and stick zone over ``[wear] cycles`` load
     cycles of the case's ``[history]`` (one cycle, kind ``cycle`` or ``harmonic``, or kind
@@ -237,7 +270,8 @@ def wear(
     or ``"energy"``), ``coefficient`` (k or alpha > 0, in 1/stress), ``share`` (the pad's share
     of the depth, 0 to 1), ``cycles`` (physical cycles), ``checkpoints`` (a list of cycles in
     increasing order, or a count spaced logarithmically), ``max_depth_increment``, ``span`` (the
-    grid's width over the unworn contact's). ``cells`` overrides ``[solver] cells``. Bad input
+    grid's width over the unworn contact's), ``loop_datum`` (the length the fretting loop's
+    relative displacement is measured from). ``cells`` overrides ``[solver] cells``. Bad input
     raises :class:`InputError` naming the field.
 
     The GIL is released while the wear runs; Ctrl-C interrupts it between cycles (checked every
@@ -256,6 +290,7 @@ def wear(
             "cycles": cycles,
             "max_depth_increment": max_depth_increment,
             "span": span,
+            "loop_datum": loop_datum,
         },
     )
     if checkpoints is not None:

@@ -415,3 +415,22 @@ def test_crack_growth_draws_the_ranges_and_the_threshold_on_log_axes():
     assert result.intensity_unit in ax.get_ylabel() and "mm" in ax.get_xlabel()
     assert result.verdict in ax.get_title()
     plt.close("all")
+
+
+def test_fretting_loops_draw_each_checkpoints_loop():
+    result = halfplane.wear(
+        halfplane.read_case(ROOT / "examples" / "wear-sliding.toml"),
+        cells=100,
+        cycles=100,
+        checkpoints=[1, 100],
+    )
+    ax = plot.fretting_loops(result)
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    assert set(lines) == {"cycle 1", "cycle 100"}
+    loop = result.fretting_loop(100)
+    np.testing.assert_array_equal(lines["cycle 100"].get_xdata(), loop["relative_displacement"])
+    np.testing.assert_array_equal(lines["cycle 100"].get_ydata(), loop["shear"])
+    assert "datum" in ax.get_xlabel() and "N/mm" in ax.get_ylabel()
+    with pytest.raises(KeyError, match="cycle 2 is not a checkpoint"):
+        plot.fretting_loops(result, cycles=[2])
+    plt.close("all")

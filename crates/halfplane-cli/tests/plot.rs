@@ -216,8 +216,8 @@ fn the_crack_figure_draws_the_ranges_the_threshold_and_the_crack() {
 
 #[test]
 fn the_wear_figure_draws_the_checkpoints_and_the_chosen_quantity() {
-    // The partial-slip example on a coarse grid (100 cells, to keep the test quick): three
-    // panels side by side, the width of three 640-pixel panels.
+    // The partial-slip example on a coarse grid (100 cells, to keep the test quick): four
+    // panels side by side in the width of three 640-pixel panels.
     let scratch = Scratch::new("wear");
     let case = example("wear-partial-slip.toml");
     let png = scratch.out("wear.png");
@@ -230,7 +230,7 @@ fn the_wear_figure_draws_the_checkpoints_and_the_chosen_quantity() {
     assert!((400..1000).contains(&height), "height {height}");
     assert!(
         bytes.len() > 50_000,
-        "{} bytes: too few for three panels",
+        "{} bytes: too few for four panels",
         bytes.len()
     );
     // One curve per checkpoint (1 to 1e6, seven), the stick zone on the pressure, the chosen
@@ -258,6 +258,9 @@ fn the_wear_figure_draws_the_checkpoints_and_the_chosen_quantity() {
         "wear depth, both bodies",
         "depth h (mm)",
         "pressure p (MPa)",
+        "fretting loops, colours as the depth's",
+        "shear load Q (N/mm)",
+        "relative displacement δ (mm), datum 7.611 mm",
         "peak_pressure at the checkpoints",
         "peak_pressure (MPa)",
         "\n10\n",

@@ -34,9 +34,10 @@ pub struct CheckpointQuantity {
 /// The wear figure of a run: the depth worn from both bodies and the pressure at the end of the
 /// cycle along x at each checkpoint (at most [`MAX_PROFILES`]; x over the cells that are in
 /// contact or worn at any of them, with a margin), the permanent stick zone of the last
-/// checkpoint marked on the pressure, and `quantity` against cycles on a logarithmic axis (its
+/// checkpoint marked on the pressure, `quantity` against cycles on a logarithmic axis (its
 /// values too when all are positive and they span more than a factor of 100, as wear volume
-/// and depth do over decades of cycles).
+/// and depth do over decades of cycles), and the fretting loops of the checkpoints drawn (Q
+/// against the bodies' relative displacement from the datum `loop_datum`).
 ///
 /// # Errors
 /// [`PlotError::Request`] when the run has no checkpoint, or `quantity` has not one value per
@@ -44,6 +45,7 @@ pub struct CheckpointQuantity {
 pub fn wear_figure(
     result: &WearResult,
     quantity: &CheckpointQuantity,
+    loop_datum: f64,
     units: &Units,
 ) -> Result<Figure, PlotError> {
     let checkpoints = &result.checkpoints;
@@ -60,7 +62,7 @@ pub fn wear_figure(
             .map(|i| (last.fields.x[i], v[i]))
             .collect::<Vec<_>>()
     };
-    let (mut depth, mut pressure) = (Vec::new(), Vec::new());
+    let (mut depth, mut pressure, mut loops) = (Vec::new(), Vec::new(), Vec::new());
     // The stick zone first, so that the pressure's peaks at its ends are drawn over it.
     if let Some([left, right]) = last.stick {
         let top = checkpoints
@@ -97,6 +99,13 @@ pub fn wear_figure(
             color,
             along(&c.fields.pressure),
         ));
+        let points = c.fretting_loop.iter();
+        loops.push(Series::new(
+            "",
+            Style::Line,
+            color,
+            points.map(|p| (p.relative_displacement, p.shear)).collect(),
+        ));
     }
     let drawn_of = match shown.len() < checkpoints.len() {
         true => format!(" ({} of {} checkpoints)", shown.len(), checkpoints.len()),
@@ -117,6 +126,17 @@ pub fn wear_figure(
         pressure,
     );
     pressure_panel.legend = Legend::Below;
+    let loop_panel = Panel::new(
+        format!("fretting loops, colours as the depth's{drawn_of}"),
+        format!(
+            "relative displacement δ ({}), datum {} {}",
+            units.length,
+            number(loop_datum),
+            units.length
+        ),
+        format!("shear load Q ({})", units.force_per_length),
+        loops,
+    );
     Ok(Figure {
         title: format!(
             "Fretting wear over {} cycles ({} marched, the others jumped)",
@@ -126,6 +146,7 @@ pub fn wear_figure(
             depth_panel,
             pressure_panel,
             quantity_panel(checkpoints, quantity)?,
+            loop_panel,
         ],
     })
 }

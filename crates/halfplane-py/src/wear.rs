@@ -9,7 +9,7 @@ use crate::case::{to_toml, PyCase};
 use crate::convert;
 use crate::errors;
 use halfplane::march::Worn;
-use halfplane::wear::{self, Checkpoint, CheckpointFields, CycleWear, WornCycle};
+use halfplane::wear::{self, Checkpoint, CheckpointFields, CycleWear, LoopPoint, WornCycle};
 use halfplane::Error;
 use halfplane_case::report::wear::{WearReport, WearRow};
 use numpy::{PyArray1, PyArrayMethods};
@@ -66,10 +66,18 @@ const FIELDS: [(&str, Field); 6] = [
     ("slip_range", |f| &f.slip_range),
 ];
 
+/// The fretting loop of a checkpoint, as its `--fields` CSV names the columns.
+type LoopValue = fn(&LoopPoint) -> f64;
+const LOOP: [(&str, LoopValue); 2] = [
+    ("loop_shear", |p| p.shear),
+    ("loop_relative_displacement", |p| p.relative_displacement),
+];
+
 /// `halfplane wear CASE --cells CELLS --json` with the `[wear]` fields in `overrides` (a dict of
 /// the section's fields, e.g. `{"cycles": 1000}`) put in: the report as a dict whose
 /// `checkpoints` are one array per `--csv` column, with `x` (the cell centres) and each field of
-/// `--fields` as a (checkpoints, cells) array. A run that stops part way after reaching some
+/// `--fields` as a (checkpoints, cells) array, and the fretting loops as (checkpoints, points)
+/// arrays `loop_shear` and `loop_relative_displacement`. A run that stops part way after reaching some
 /// checkpoints returns their report (`stopped` set, `simulated_cycles` None) with the exception
 /// to raise; one that reaches none raises it.
 #[pyfunction]
@@ -90,9 +98,9 @@ pub fn wear_report<'py>(
     let options = &settings.options;
     // Building the march marches the ramp: released too.
     let mut worn = py
-        .detach(|| case.worn_march_named(settings.span, cells, "cells"))
+        .detach(|| case.worn_march_named(&settings, cells, "cells"))
         .map_err(input)?;
-    let approach = worn.elastic_approach();
+    let (approach, datum) = (worn.elastic_approach(), worn.loop_datum());
     let mut reached: Vec<Checkpoint> = Vec::new();
     let mut watched = Watched {
         worn: &mut worn,
@@ -112,7 +120,15 @@ pub fn wear_report<'py>(
         Err(e) if reached.is_empty() => return Err(errors::from_library(py, &e)),
         Err(e) => Some(errors::from_library(py, &e).into_value(py)),
     };
-    let report = WearReport::new(&reached, simulated, approach, options, &case.units, stopped);
+    let report = WearReport::new(
+        &reached,
+        simulated,
+        approach,
+        datum,
+        options,
+        &case.units,
+        stopped,
+    );
     let (summary, rows) = convert::to_node(&report)?.take("checkpoints");
     let out = summary.into_py(py)?.cast_into::<PyDict>()?;
     let keys = csv_keys(&WearRow::COLUMNS);
@@ -126,6 +142,18 @@ pub fn wear_report<'py>(
             .flat_map(|c| field(&c.fields).iter().copied())
             .collect();
         out.set_item(name, PyArray1::from_vec(py, values).reshape(shape)?)?;
+    }
+    // Every checkpoint's cycle has the same increments, so its loop as many points.
+    let points = reached.first().map_or(0, |c| c.fretting_loop.len());
+    for (name, value) in LOOP {
+        let values: Vec<f64> = reached
+            .iter()
+            .flat_map(|c| c.fretting_loop.iter().map(value))
+            .collect();
+        out.set_item(
+            name,
+            PyArray1::from_vec(py, values).reshape([reached.len(), points])?,
+        )?;
     }
     Ok((out, error))
 }

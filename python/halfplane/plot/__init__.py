@@ -6,8 +6,9 @@ Each function takes results the package returns, not files: :func:`load_space` a
 :func:`~halfplane.evolve` table (and a :class:`~halfplane.MarchResult` to overlay),
 :func:`march_fields` a :class:`~halfplane.MarchResult` with fields, :func:`stress_map` a
 :class:`~halfplane.StressResult` with its grid, :func:`fatigue_map` a
-:class:`~halfplane.FatigueResult`, :func:`crack_growth` a :class:`~halfplane.CrackResult` and
-:func:`design_map` a table of cases and their results. Each
+:class:`~halfplane.FatigueResult`, :func:`crack_growth` a :class:`~halfplane.CrackResult`,
+:func:`fretting_loops` a :class:`~halfplane.WearResult` and :func:`design_map` a table of
+cases and their results. Each
 draws on the Axes given (``ax=``, or ``axes=`` a pair for the two-panel figures) or on a new
 figure, and returns the Axes (one panel) or the Figure (two panels), so it can be restyled or
 saved with ``savefig``.
@@ -21,7 +22,15 @@ matplotlib is imported when a function is first called, so ``import halfplane.pl
 without it; a call without it raises ImportError saying how to install it.
 """
 
-from ._curves import MAX_STEPS, crack_growth, evolution, load_space, march_fields, slip_map
+from ._curves import (
+    MAX_STEPS,
+    crack_growth,
+    evolution,
+    fretting_loops,
+    load_space,
+    march_fields,
+    slip_map,
+)
 from ._maps import design_map, fatigue_map, stress_map
 
 __all__ = [
@@ -30,6 +39,7 @@ __all__ = [
     "design_map",
     "evolution",
     "fatigue_map",
+    "fretting_loops",
     "load_space",
     "march_fields",
     "slip_map",

@@ -1,5 +1,6 @@
 """Curves of :mod:`halfplane.plot`: the load space, the slip-zone map, the stick zone over a
-cycle, the fields of a march and a crack's stress intensity ranges against its length."""
+cycle, the fields of a march, a crack's stress intensity ranges against its length and the
+fretting loops of a wear run."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ import pandas as pd
 from .._batch import steady_batch
 from .._crack import CrackResult
 from .._results import MarchResult, SteadyResult
+from .._wear import WearResult
 from ._base import (
     Floats,
     floats,
@@ -384,5 +386,28 @@ def crack_growth(result: CrackResult, *, ax: Axes | None = None) -> Axes:
     ax.set_title(f"Crack at x = {result.position:.4g} {result.units.length}, "
                  f"{result.angle:.1f}° from the normal: {result.verdict}")
     ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="best")
+    return ax
+
+
+def fretting_loops(
+    result: WearResult, *, cycles: Sequence[int] | None = None, ax: Axes | None = None
+) -> Axes:
+    """The fretting loops of a wear run, as the last panel of ``halfplane plot wear``: Q
+    against the bodies' relative displacement (measured from ``result.loop_datum``), one curve
+    per checkpoint of ``cycles`` (default all). ``result`` is :func:`halfplane.wear`'s; a cycle
+    that is not a checkpoint raises KeyError naming those that are. Returns the Axes."""
+    ax = new_axes(ax)
+    chosen = [int(c) for c in result.checkpoints["cycle"]] if cycles is None else list(cycles)
+    for k, cycle in enumerate(chosen):
+        loop = result.fretting_loop(cycle)
+        ax.plot(floats(loop, "relative_displacement"), floats(loop, "shear"), "-",
+                color=f"C{k % 10}", lw=1.4, label=f"cycle {cycle}")
+    units = result.units
+    ax.set_xlabel(f"relative displacement δ ({units.length}), "
+                  f"datum {result.loop_datum:.4g} {units.length}")
+    ax.set_ylabel(f"shear load Q ({units.force}/{units.length})")
+    ax.set_title("Fretting loops")
+    ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="best")
     return ax

@@ -269,14 +269,32 @@ impl Case {
 
     /// The march `halfplane wear` runs: the sliding history, or the ramp and first cycle of the
     /// load history (which must have exactly one cycle: the physical ones are `[wear] cycles`),
-    /// on a grid `span` times the unworn contact with `cells` cells (`--cells`).
-    pub fn worn_march(&self, span: f64, cells: Option<usize>) -> Result<halfplane::march::Worn> {
-        self.worn_march_named(span, cells, "--cells")
+    /// on a grid `[wear] span` times the unworn contact with `cells` cells (`--cells`), its
+    /// fretting loop measured from `[wear] loop_datum`.
+    pub fn worn_march(
+        &self,
+        wear: &WearSettings,
+        cells: Option<usize>,
+    ) -> Result<halfplane::march::Worn> {
+        self.worn_march_named(wear, cells, "--cells")
     }
 
     /// [`Case::worn_march`] for another front end: an invalid `cells` is reported under `name`
     /// (Python's `cells` keyword).
     pub fn worn_march_named(
+        &self,
+        wear: &WearSettings,
+        cells: Option<usize>,
+        name: &str,
+    ) -> Result<halfplane::march::Worn> {
+        let worn = self.worn_on_grid(wear.span, cells, name)?;
+        Ok(match wear.loop_datum {
+            Some(d) => worn.with_loop_datum(d)?,
+            None => worn,
+        })
+    }
+
+    fn worn_on_grid(
         &self,
         span: f64,
         cells: Option<usize>,

@@ -19,6 +19,8 @@ pub struct WearSettings {
     pub options: WearOptions,
     /// The grid's width over the unworn contact's.
     pub span: f64,
+    /// The fretting loop's datum (a length); `None`: the march's default.
+    pub loop_datum: Option<f64>,
 }
 
 /// Resolves `[wear]` (required by `halfplane wear`).
@@ -26,7 +28,7 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
     let table = table.ok_or_else(|| {
         anyhow!("missing section [wear]: give law = \"archard\" or \"energy\", coefficient (1/stress) and cycles")
     })?;
-    const FIELDS: [&str; 7] = [
+    const FIELDS: [&str; 8] = [
         "law",
         "coefficient",
         "share",
@@ -34,6 +36,7 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
         "checkpoints",
         "max_depth_increment",
         "span",
+        "loop_datum",
     ];
     if let Some(k) = table.keys().find(|k| !FIELDS.contains(&k.as_str())) {
         bail!("unknown field wear.{k}: [wear] takes {}", FIELDS.join(", "));
@@ -76,7 +79,15 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
     if !(span.is_finite() && (1.0..=100.0).contains(&span)) {
         bail!("invalid wear.span = {span}: must be a factor from 1 to 100 (the grid's width over the unworn contact's)");
     }
-    Ok(WearSettings { options, span })
+    let loop_datum = number(table, "loop_datum")?;
+    if let Some(d) = loop_datum.filter(|d| !(d.is_finite() && *d > 0.0)) {
+        bail!("invalid wear.loop_datum = {d}: must be a length > 0 (the distance from the contact at which the fretting loop's displacement is measured)");
+    }
+    Ok(WearSettings {
+        options,
+        span,
+        loop_datum,
+    })
 }
 
 /// A number field (integers read as numbers), or the error naming it.
@@ -147,6 +158,10 @@ mod tests {
             (
                 "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\ncycle = 3",
                 "wear.cycle",
+            ),
+            (
+                "law = \"archard\"\ncoefficient = 1e-8\ncycles = 10\nloop_datum = 0",
+                "wear.loop_datum",
             ),
         ] {
             let e = format!("{:#}", parse(text).unwrap_err());

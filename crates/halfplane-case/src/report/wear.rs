@@ -23,6 +23,7 @@ pub struct WearRow {
     stick_left: Option<f64>,
     stick_right: Option<f64>,
     slip_amplitude_max: f64,
+    displacement_amplitude: f64,
     /// `--fatigue`: each parameter's maximum over the checkpoint's cycle (absent without it).
     #[serde(skip_serializing_if = "Option::is_none")]
     fatigue: Option<CheckpointFatigue>,
@@ -92,7 +93,7 @@ fn optional(x: Option<f64>) -> Cell {
 impl WearRow {
     /// The columns, in order (the stick columns empty in CSV, "-" in the table, null in JSON,
     /// in gross sliding).
-    pub const COLUMNS: [Column<Self>; 11] = {
+    pub const COLUMNS: [Column<Self>; 12] = {
         use Quantity::{Area, Energy, Length, Stress};
         use Style::Sig;
         [
@@ -134,6 +135,11 @@ impl WearRow {
             })
             .titled("slip amp")
             .table(11, Sig(5)),
+            Column::<Self>::new("displacement_amplitude", Length, |r| {
+                Cell::Num(r.displacement_amplitude)
+            })
+            .titled("disp amp")
+            .table(11, Sig(5)),
         ]
     };
 
@@ -151,6 +157,7 @@ impl WearRow {
             stick_left: c.stick.map(|s| s[0]),
             stick_right: c.stick.map(|s| s[1]),
             slip_amplitude_max: c.slip_amplitude_max,
+            displacement_amplitude: c.displacement_amplitude,
             fatigue: None,
         }
     }
@@ -205,6 +212,8 @@ pub struct WearReport {
     simulated_cycles: Option<usize>,
     /// The elastic approach of the unworn contact (the jumps' depth bound is a fraction of it).
     elastic_approach: f64,
+    /// The datum of the fretting loop's relative displacement (a length).
+    loop_datum: f64,
     checkpoints: Vec<WearRow>,
     /// Why the run stopped before its last cycle (the checkpoints are those reached); null
     /// when it ran to the end.
@@ -219,6 +228,7 @@ impl WearReport {
         checkpoints: &[Checkpoint],
         simulated_cycles: Option<usize>,
         elastic_approach: f64,
+        loop_datum: f64,
         options: &WearOptions,
         units: &Units,
         stopped: Option<String>,
@@ -234,6 +244,7 @@ impl WearReport {
             cell_width: x.map_or(0.0, |x| x[1] - x[0]),
             simulated_cycles,
             elastic_approach,
+            loop_datum,
             checkpoints: checkpoints.iter().map(WearRow::new).collect(),
             stopped,
             units: units.clone(),
@@ -355,6 +366,16 @@ impl WearReport {
     }
 }
 
+/// The fretting loop of a checkpoint's cycle as CSV: `shear` (Q) and `relative_displacement`,
+/// at the cycle's start and after every increment and slide.
+pub fn loop_csv(c: &Checkpoint) -> String {
+    let mut o = String::from("shear,relative_displacement\n");
+    for p in &c.fretting_loop {
+        let _ = writeln!(o, "{},{}", p.shear, p.relative_displacement);
+    }
+    o
+}
+
 /// The fields of a checkpoint as CSV: x, depth (both bodies), depth_pad, depth_specimen,
 /// pressure and traction at the end of the cycle, slip_range over it.
 pub fn fields_csv(c: &Checkpoint) -> String {
@@ -395,6 +416,7 @@ mod tests {
             stick_left: None,
             stick_right: None,
             slip_amplitude_max: 1e-3,
+            displacement_amplitude: 2e-3,
             fatigue: None,
         };
         let text = crate::report::csv(&WearRow::COLUMNS, std::slice::from_ref(&row));
@@ -402,10 +424,13 @@ mod tests {
         let mut csv: Vec<String> = header.split(',').map(str::to_string).collect();
         csv.sort();
         assert_eq!(csv, json_keys(&row));
-        assert_eq!(line, "10,0.000001,0.000002,0.1,1,-0.5,0.5,800,,,0.001\n");
+        assert_eq!(
+            line,
+            "10,0.000001,0.000002,0.1,1,-0.5,0.5,800,,,0.001,0.002\n"
+        );
     }
 
-    /// `--fatigue`: the CSV's extra columns after the 11 of the checkpoint are the JSON's
+    /// `--fatigue`: the CSV's extra columns after the 12 of the checkpoint are the JSON's
     /// `fatigue` object flattened (`fatigue.<parameter>.<field>`), the critical-distance values
     /// where given, and the table lists each parameter at each checkpoint.
     #[test]
@@ -433,6 +458,7 @@ mod tests {
             stick_left: Some(-0.5),
             stick_right: Some(0.5),
             slip_amplitude_max: 1e-3,
+            displacement_amplitude: 2e-3,
             fatigue: None,
         }
         .with_fatigue(fatigue);
@@ -446,6 +472,7 @@ mod tests {
             cell_width: 0.0077,
             simulated_cycles: Some(1),
             elastic_approach: 0.0058,
+            loop_datum: 7.6,
             checkpoints: vec![row.clone()],
             stopped: None,
             units: Units::default(),

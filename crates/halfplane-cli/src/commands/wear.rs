@@ -3,7 +3,7 @@
 use crate::args::{Format, WearArgs};
 use crate::output::{emit, note};
 use crate::progress::Progress;
-use crate::report::wear::{fields_csv, WearReport};
+use crate::report::wear::{fields_csv, loop_csv, WearReport};
 use crate::units::Units;
 use anyhow::{anyhow, bail, Result};
 use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, FatigueResult};
@@ -69,7 +69,7 @@ impl WearConfig {
         } else {
             None
         };
-        let mut worn = case.worn_march(settings.span, args.cells)?;
+        let mut worn = case.worn_march(&settings, args.cells)?;
         if fatigue.is_some() {
             worn.record_tractions();
         }
@@ -116,13 +116,15 @@ pub fn run(config: WearConfig) -> Result<()> {
     let bar = Progress::new("wear", "checkpoints", options.checkpoints().len() as u64);
     let mut reached: Vec<Checkpoint> = Vec::new();
     let mut write_error = None;
-    let approach = worn.elastic_approach();
+    let (approach, datum) = (worn.elastic_approach(), worn.loop_datum());
     let outcome = wear::run(&mut worn, &options, |c| {
         bar.inc(1);
         if let (Some(dir), None) = (&fields, &write_error) {
-            let path = dir.join(format!("checkpoint_{}.csv", c.cycle));
-            if let Err(e) = std::fs::write(&path, fields_csv(c)) {
-                write_error = Some(anyhow!("cannot write {}: {e}", path.display()));
+            for (name, text) in [("checkpoint", fields_csv(c)), ("loop", loop_csv(c))] {
+                let path = dir.join(format!("{name}_{}.csv", c.cycle));
+                if let Err(e) = std::fs::write(&path, text) {
+                    write_error.get_or_insert(anyhow!("cannot write {}: {e}", path.display()));
+                }
             }
         }
         if let (Some(f), Some(cycle), None) = (&fatigue, &c.tractions, &fatigue_error) {
@@ -146,7 +148,9 @@ pub fn run(config: WearConfig) -> Result<()> {
         Ok(r) => (Some(r.simulated_cycles), None),
         Err(e) => (None, Some(e.to_string())),
     };
-    let mut report = WearReport::new(&reached, simulated, approach, &options, &units, stopped);
+    let mut report = WearReport::new(
+        &reached, simulated, approach, datum, &options, &units, stopped,
+    );
     if fatigue.is_some() {
         report = report.with_fatigue(&parameters);
     }

@@ -53,7 +53,7 @@ pub const CRACK_COLUMNS: [&str; 2] = ["crack.verdict", "crack.arrest_length"];
 /// The columns a wear sweep adds: the last checkpoint's quantities (the cycle `[wear] cycles`)
 /// as `halfplane wear --json` names them (the stick ends empty in gross sliding), and the cycles
 /// marched.
-pub const WEAR_COLUMNS: [&str; 11] = [
+pub const WEAR_COLUMNS: [&str; 12] = [
     "wear.wear_volume",
     "wear.max_depth",
     "wear.energy_per_cycle",
@@ -64,6 +64,7 @@ pub const WEAR_COLUMNS: [&str; 11] = [
     "wear.stick_left",
     "wear.stick_right",
     "wear.slip_amplitude_max",
+    "wear.displacement_amplitude",
     "wear.simulated_cycles",
 ];
 

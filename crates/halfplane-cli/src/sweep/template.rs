@@ -94,7 +94,7 @@ pub struct CrackSummary {
 /// cycles it marched.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WearSummary {
-    /// `wear.wear_volume` to `wear.slip_amplitude_max`: the wear report's columns after `cycle`
+    /// `wear.wear_volume` to `wear.displacement_amplitude`: the wear report's columns after `cycle`
     /// ([`WearRow::COLUMNS`]), `None` where the report leaves a cell empty (the stick ends in
     /// gross sliding).
     numbers: [Option<f64>; WEAR_NUMBERS],
@@ -106,7 +106,7 @@ pub struct WearSummary {
 const WEAR_NUMBERS: usize = WearRow::COLUMNS.len() - 1;
 
 impl WearSummary {
-    /// The numbers of `wear.wear_volume` to `wear.slip_amplitude_max`, in column order (the
+    /// The numbers of `wear.wear_volume` to `wear.displacement_amplitude`, in column order (the
     /// stick ends `None` in gross sliding).
     pub fn numbers(&self) -> [Option<f64>; WEAR_NUMBERS] {
         self.numbers
@@ -147,7 +147,7 @@ impl Template {
             Analysis::Wear => {
                 // Marches the ramp once, so a case `halfplane wear` would refuse (a history of
                 // more than one cycle, no [wear]) is refused before the first row.
-                base.worn_march(base.wear()?.span, None)?;
+                base.worn_march(&base.wear()?, None)?;
             }
             _ => {}
         }
@@ -449,7 +449,7 @@ fn crack_summary(case: &Case) -> Result<CrackSummary> {
 /// A run that stops part way is the row's error (its earlier checkpoints are not recorded).
 fn wear_summary(case: &Case) -> Result<WearSummary> {
     let settings = case.wear()?;
-    let mut worn = case.worn_march(settings.span, None)?;
+    let mut worn = case.worn_march(&settings, None)?;
     let result = halfplane::wear::run(&mut worn, &settings.options, |_| {})?;
     let last = result
         .checkpoints

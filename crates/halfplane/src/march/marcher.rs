@@ -548,6 +548,7 @@ impl Marcher {
         let q_old_sum: f64 = self.traction.iter().sum();
         let mut passes = 0;
         let mut shift;
+        let (mut restarts, mut forced) = (0, None);
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
@@ -558,8 +559,24 @@ impl Marcher {
             }
             if !self.cells.contains(&Cell::Stick) {
                 // All contact cells were flagged to slip while |Q| < fP: restart from full stick.
-                for c in self.cells.iter_mut().filter(|c| matches!(c, Cell::Slip(_))) {
-                    *c = Cell::Stick;
+                // Flagged again, the stick zone is narrower than a cell (Q within a cell's share
+                // of f P, as at the onset of sliding): the cell that exceeded its limit least
+                // sticks alone for the rest of the sub-step, carrying what the slipping cells
+                // leave of Q (a cell-level error, like a stick zone's edge on the grid).
+                restarts += 1;
+                if restarts == 1 {
+                    for c in self.cells.iter_mut().filter(|c| matches!(c, Cell::Slip(_))) {
+                        *c = Cell::Stick;
+                    }
+                } else {
+                    let excess = |i: usize| self.flag_traction[i].abs() - f * self.pressure[i];
+                    let nearest = (0..n)
+                        .filter(|&i| self.pressure[i] > 0.0)
+                        .min_by(|&i, &j| excess(i).total_cmp(&excess(j)));
+                    if let Some(i) = nearest {
+                        self.cells[i] = Cell::Stick;
+                        forced = Some(i);
+                    }
                 }
             }
             // Known traction increments: slip cells at the friction limit, released cells to zero.
@@ -606,7 +623,8 @@ impl Marcher {
                     Cell::Stick => {
                         self.sub_slip[i] = 0.0;
                         let q = self.traction[i] + self.dq[i];
-                        if q.abs() > f * self.pressure[i] + traction_tolerance {
+                        if q.abs() > f * self.pressure[i] + traction_tolerance && forced != Some(i)
+                        {
                             self.flag_traction[i] = q;
                             self.cells[i] = Cell::Slip(q.signum());
                             changed = true;

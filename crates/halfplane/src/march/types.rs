@@ -255,6 +255,7 @@ pub struct RelativeDisplacement {
     scale: f64,
     /// `(A/pi) Q`.
     log_coefficient: f64,
+    shear: f64,
 }
 
 impl RelativeDisplacement {
@@ -263,7 +264,13 @@ impl RelativeDisplacement {
             at_scale,
             scale,
             log_coefficient: compliance / std::f64::consts::PI * shear,
+            shear,
         }
+    }
+
+    /// The shear load Q it is under.
+    pub fn shear(&self) -> f64 {
+        self.shear
     }
 
     /// delta with the datum `datum` (a length > 0).

@@ -19,7 +19,7 @@ use crate::labels::Edge;
 use crate::load::LoadPoint;
 use crate::normal::Contact;
 use crate::quadrature::gauss_legendre;
-use crate::wear::{CycleWear, WornCycle};
+use crate::wear::{CycleWear, LoopPoint, WornCycle};
 
 /// The load just short of sliding: `f P (1 - SLIDE_MARGIN)` (see the module's docs).
 const SLIDE_MARGIN: f64 = 1e-6;
@@ -46,6 +46,8 @@ pub struct Worn {
     last: ([f64; 2], f64),
     /// The last cycle's increments, when recording ([`Worn::record_tractions`]).
     recorded: Option<Recorded>,
+    /// The datum of the fretting loop's relative displacement.
+    datum: f64,
 }
 
 /// An increment as recorded: the contact ends, the bulk stress, the pressure and the shear
@@ -210,7 +212,28 @@ impl Worn {
             unworn: [ends[Edge::Left], ends[Edge::Right]],
             last,
             recorded: None,
+            datum: Self::DEFAULT_DATUM * unworn.half_width(),
         })
+    }
+
+    /// The default datum of the fretting loop, in half-widths of the unworn contact: far enough
+    /// that the contact's traction acts on the datum points as a point load.
+    pub const DEFAULT_DATUM: f64 = 10.0;
+
+    /// The datum of the fretting loop's relative displacement (a length > 0; default
+    /// [`Worn::DEFAULT_DATUM`] half-widths of the unworn contact): see
+    /// [`crate::march::RelativeDisplacement`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `wear.loop_datum` when it is not finite and > 0.
+    pub fn with_loop_datum(self, datum: f64) -> Result<Self> {
+        crate::error::physical_positive("wear.loop_datum", datum)?;
+        Ok(Self { datum, ..self })
+    }
+
+    /// The datum of the fretting loop.
+    pub fn loop_datum(&self) -> f64 {
+        self.datum
     }
 
     /// From the next cycle on, keeps each cycle's tractions, increment by increment, for
@@ -297,6 +320,8 @@ impl WornCycle for Worn {
         if let Some(r) = &mut self.recorded {
             r.increments.clear();
         }
+        let mut fretting_loop = Vec::with_capacity(self.cycle.len() + 1);
+        fretting_loop.push(self.loop_point());
         for increment in self.cycle.clone() {
             match increment {
                 Increment::Load(load) => {
@@ -306,6 +331,7 @@ impl WornCycle for Worn {
                 }
                 Increment::Slide(distance) => self.marcher.slide(distance)?,
             }
+            fretting_loop.push(self.loop_point());
             for i in 0..n {
                 low[i] = low[i].min(self.marcher.slip[i]);
                 high[i] = high[i].max(self.marcher.slip[i]);
@@ -339,6 +365,7 @@ impl WornCycle for Worn {
             slip_range,
             stick: best,
             contact: ends,
+            fretting_loop,
         })
     }
 
@@ -352,6 +379,17 @@ impl WornCycle for Worn {
             cycle.push(ends, bulk, p, q)?;
         }
         Ok(Some(cycle))
+    }
+}
+
+impl Worn {
+    /// Q and the relative displacement now.
+    fn loop_point(&self) -> LoopPoint {
+        let d = self.marcher.relative_displacement();
+        LoopPoint {
+            shear: d.shear(),
+            relative_displacement: d.at(self.datum),
+        }
     }
 }
 

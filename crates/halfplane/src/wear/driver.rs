@@ -26,6 +26,18 @@ pub struct CycleWear {
     pub stick: Option<[f64; 2]>,
     /// The contact's ends at the end of the cycle.
     pub contact: [f64; 2],
+    /// The fretting loop: the cycle's start, then every increment and slide.
+    pub fretting_loop: Vec<LoopPoint>,
+}
+
+/// A point of a fretting loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoopPoint {
+    /// The shear load Q.
+    pub shear: f64,
+    /// The bodies' relative tangential displacement ([`crate::march::RelativeDisplacement`],
+    /// at the march's loop datum).
+    pub relative_displacement: f64,
 }
 
 /// A march of successive load cycles over a gap that wears: [`crate::march::Worn`].
@@ -136,6 +148,18 @@ fn checkpoint(w: &CycleWear, depth: &[f64], share: f64, x: &[f64], cycle: u64) -
         peak_pressure: w.pressure.iter().copied().fold(0.0, f64::max),
         stick: w.stick,
         slip_amplitude_max: 0.5 * w.slip_range.iter().copied().fold(0.0, f64::max),
+        displacement_amplitude: {
+            let d = w.fretting_loop.iter().map(|p| p.relative_displacement);
+            let (lo, hi) = d.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                (l.min(v), h.max(v))
+            });
+            if lo <= hi {
+                0.5 * (hi - lo)
+            } else {
+                0.0
+            }
+        },
+        fretting_loop: w.fretting_loop.clone(),
         fields: CheckpointFields {
             x: x.to_vec(),
             depth: depth.to_vec(),
@@ -181,6 +205,7 @@ mod tests {
                 slip_range: vec![0.0; self.x.len()],
                 stick: None,
                 contact: [-1.0, 1.0],
+                fretting_loop: Vec::new(),
             })
         }
     }

@@ -21,7 +21,7 @@
 
 mod driver;
 
-pub use driver::{run, CycleWear, WornCycle};
+pub use driver::{run, CycleWear, LoopPoint, WornCycle};
 
 use crate::error::{Error, Result};
 
@@ -242,6 +242,12 @@ pub struct Checkpoint {
     pub stick: Option<[f64; 2]>,
     /// The largest slip amplitude (half the slip range) in the cycle.
     pub slip_amplitude_max: f64,
+    /// Half the range of the bodies' relative displacement over the cycle (the fretting loop's
+    /// displacement amplitude, with the loop's datum: [`crate::march::RelativeDisplacement`]).
+    pub displacement_amplitude: f64,
+    /// The fretting loop of the cycle: Q and the bodies' relative displacement at its start and
+    /// after every increment and slide.
+    pub fretting_loop: Vec<LoopPoint>,
     /// The fields of every cell.
     pub fields: CheckpointFields,
     /// The tractions of every increment of the cycle, when the march recorded them
