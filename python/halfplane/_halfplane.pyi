@@ -134,5 +134,8 @@ def match_report(
     edge: Optional[str] = None,
 ) -> Tuple[Dict[str, Any], Case, str, List[str]]: ...
 def wear_report(
-    case: Case, cells: Optional[int] = None, overrides: Optional[Mapping[str, Any]] = None
-) -> Tuple[Dict[str, Any], Optional[BaseException]]: ...
+    case: Case,
+    cells: Optional[int] = None,
+    overrides: Optional[Mapping[str, Any]] = None,
+    fatigue: bool = False,
+) -> Tuple[Dict[str, Any], List[str], Optional[BaseException]]: ...

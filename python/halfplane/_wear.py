@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 from dataclasses import dataclass
 from typing import Any, ClassVar, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -76,7 +77,10 @@ class WearResult(Record):
     cells that did not slip in the cycle; NaN in gross sliding), ``slip_amplitude_max`` and
     ``displacement_amplitude`` (half the range of the fretting loop's relative displacement)
     (float64; each access returns a copy). ``loop_datum`` is the length the loop's relative
-    displacement is measured from (docs/wear.md, "Fretting loop").
+    displacement is measured from (docs/wear.md, "Fretting loop"). With ``fatigue=True`` the
+    checkpoints add the columns of ``wear --fatigue --csv``, ``fatigue.<parameter>.<field>``
+    (the parameter's maximum over the checkpoint's cycle, where, and the critical-distance
+    values; NaN where the command's CSV is empty).
 
     The fields of every checkpoint (``wear --fields``): ``x`` (the cell centres, shape
     (cells,)) and ``depth`` (both bodies), ``depth_pad``, ``depth_specimen``, ``pressure`` and
@@ -234,10 +238,20 @@ class WearResult(Record):
 
 def _row(record: Mapping[Any, Any]) -> Dict[str, Any]:
     """A checkpoint row as the ``--json`` object holds it: the cycle an int, NaN stick ends
-    null."""
+    null, the ``fatigue.<parameter>.<field>`` columns nested as ``fatigue`` objects without the
+    fields a parameter does not have."""
     out: Dict[str, Any] = {}
+    fatigue: Dict[str, Dict[str, float]] = {}
     for key, value in record.items():
-        out[str(key)] = int(value) if key == "cycle" else _plain(float(value))
+        name = str(key)
+        if name.startswith("fatigue."):
+            _, parameter, field = name.split(".", 2)
+            if not math.isnan(float(value)):
+                fatigue.setdefault(parameter, {})[field] = float(value)
+        else:
+            out[name] = int(value) if name == "cycle" else _plain(float(value))
+    if fatigue:
+        out["fatigue"] = fatigue
     return out
 
 
@@ -256,6 +270,7 @@ def wear(
     max_depth_increment: Optional[float] = None,
     span: Optional[float] = None,
     loop_datum: Optional[float] = None,
+    fatigue: bool = False,
 ) -> WearResult:
     """Fretting wear: the worn profiles, pressure and stick zone over ``[wear] cycles`` load
     cycles of the case's ``[history]`` (one cycle, kind ``cycle`` or ``harmonic``, or kind
@@ -271,7 +286,11 @@ def wear(
     of the depth, 0 to 1), ``cycles`` (physical cycles), ``checkpoints`` (a list of cycles in
     increasing order, or a count spaced logarithmically), ``max_depth_increment``, ``span`` (the
     grid's width over the unworn contact's), ``loop_datum`` (the length the fretting loop's
-    relative displacement is measured from). ``cells`` overrides ``[solver] cells``. Bad input
+    relative displacement is measured from). ``fatigue=True`` is ``--fatigue``: the case's
+    ``[fatigue]`` parameters over each checkpoint's cycle, on the ``[fatigue]`` grid of the
+    unworn contact, as checkpoint columns (a parameter the constants leave out is warned about,
+    as the command does; a case whose ``[fatigue]`` gives no constant raises
+    :class:`InputError`). ``cells`` overrides ``[solver] cells``. Bad input
     raises :class:`InputError` naming the field.
 
     The GIL is released while the wear runs; Ctrl-C interrupts it between cycles (checked every
@@ -295,7 +314,11 @@ def wear(
     )
     if checkpoints is not None:
         overrides["checkpoints"] = _checkpoints(checkpoints)
-    report, error = _halfplane.wear_report(case, _cells(cells), overrides or None)
+    report, skipped, error = _halfplane.wear_report(
+        case, _cells(cells), overrides or None, bool(fatigue)
+    )
+    for line in skipped:
+        warnings.warn(line, UserWarning, stacklevel=2)
     result = WearResult._from(report)
     if error is not None:
         if isinstance(error, HalfplaneError):

@@ -310,3 +310,42 @@ def test_ctrl_c_interrupts_a_long_run():
     elapsed = time.monotonic() - start
     assert elapsed < 10.0, f"interrupt seen only after {elapsed:.1f} s"
 
+
+
+FATIGUE = """
+[fatigue]
+findley_k = 0.25
+crossland_alpha = 0.4
+threshold = 160.0
+endurance_range = 700.0
+nx = 31
+nz = 16
+"""
+
+
+def test_fatigue_columns_equal_the_commands(cli, tmp_path):
+    # `fatigue=True` is `--fatigue`: the same maxima over each checkpoint's cycle, as the
+    # command's JSON objects and its CSV columns `fatigue.<parameter>.<field>`; the parameters
+    # the constants leave out are warned about as the command's stderr names them.
+    path = tmp_path / "case.toml"
+    path.write_text(
+        PARTIAL.read_text()
+        .replace("cycles = 1000000", "cycles = 100", 1)
+        .replace("checkpoints = 7 ", "checkpoints = [1, 100] ", 1)
+        + FATIGUE
+    )
+    with pytest.warns(UserWarning, match="mcdiarmid not reported"):
+        result = halfplane.wear(halfplane.read_case(str(path)), cells=100, fatigue=True)
+    done = run_cli(cli, ["wear", str(path), "--cells", "100", "--fatigue", "--json"])
+    assert done.returncode == 0, done.stderr
+    assert result.to_dict() == json.loads(done.stdout)
+    assert "mcdiarmid not reported" in done.stderr
+    done = run_cli(cli, ["wear", str(path), "--cells", "100", "--fatigue", "--csv"])
+    assert done.returncode == 0, done.stderr
+    assert_table_equals_the_csv(result.checkpoints, done.stdout)
+    assert "fatigue.findley.max" in result.checkpoints.columns
+    # Without constants: the command's error, as InputError.
+    bare = tmp_path / "bare.toml"
+    bare.write_text(path.read_text().replace(FATIGUE, ""))
+    with pytest.raises(halfplane.InputError, match="--fatigue needs material constants"):
+        halfplane.wear(halfplane.read_case(str(bare)), cells=100, fatigue=True)

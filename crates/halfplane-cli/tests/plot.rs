@@ -258,7 +258,7 @@ fn the_wear_figure_draws_the_checkpoints_and_the_chosen_quantity() {
         "wear depth, both bodies",
         "depth h (mm)",
         "pressure p (MPa)",
-        "fretting loops, colours as the depth's",
+        "fretting loops, colours as the depth&apos;s",
         "shear load Q (N/mm)",
         "relative displacement δ (mm), datum 7.611 mm",
         "peak_pressure at the checkpoints",

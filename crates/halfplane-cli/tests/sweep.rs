@@ -328,12 +328,13 @@ fn a_wear_sweep_records_the_last_checkpoint_as_the_wear_command() {
         "stick_left",
         "stick_right",
         "slip_amplitude_max",
+        "displacement_amplitude",
     ];
     assert_eq!(
         table[0][11..].join(","),
         "error,wear.wear_volume,wear.max_depth,wear.energy_per_cycle,wear.dissipated_energy,\
          wear.contact_left,wear.contact_right,wear.peak_pressure,wear.stick_left,wear.stick_right,\
-         wear.slip_amplitude_max,wear.simulated_cycles"
+         wear.slip_amplitude_max,wear.displacement_amplitude,wear.simulated_cycles"
     );
     assert_eq!(table.len(), 7);
     let mut volumes = Vec::new();
@@ -367,12 +368,12 @@ fn a_wear_sweep_records_the_last_checkpoint_as_the_wear_command() {
         assert_eq!(checkpoints.last().unwrap()["cycle"], 1000);
         // The last checkpoint's object is the text after the last "cycle".
         let last = &json[json.rfind("\"cycle\": ").unwrap()..];
-        for (name, cell) in names.iter().zip(&row[12..22]) {
+        for (name, cell) in names.iter().zip(&row[12..23]) {
             let want = json_number(last, name);
             let got = Some(cell).filter(|c| !c.is_empty()).map(|c| num(c));
             assert_eq!(got, want, "k = {k}, Q2 = {q}: {name}");
         }
-        assert_eq!(row[22], parsed["simulated_cycles"].to_string());
+        assert_eq!(row[23], parsed["simulated_cycles"].to_string());
         assert!(num(&row[12]) > 0.0, "k = {k}, Q2 = {q}: partial slip wears");
         volumes.push(num(&row[12]));
     }

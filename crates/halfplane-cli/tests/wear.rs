@@ -5,7 +5,7 @@
 mod common;
 use common::*;
 
-const COLUMNS: &str = "cycle,wear_volume,max_depth,energy_per_cycle,dissipated_energy,contact_left,contact_right,peak_pressure,stick_left,stick_right,slip_amplitude_max";
+const COLUMNS: &str = "cycle,wear_volume,max_depth,energy_per_cycle,dissipated_energy,contact_left,contact_right,peak_pressure,stick_left,stick_right,slip_amplitude_max,displacement_amplitude";
 
 fn json(args: &[&str]) -> serde_json::Value {
     let o = run(args);

@@ -5,7 +5,7 @@
 mod common;
 use common::*;
 
-const COLUMNS: &str = "cycle,wear_volume,max_depth,energy_per_cycle,dissipated_energy,contact_left,contact_right,peak_pressure,stick_left,stick_right,slip_amplitude_max";
+const COLUMNS: &str = "cycle,wear_volume,max_depth,energy_per_cycle,dissipated_energy,contact_left,contact_right,peak_pressure,stick_left,stick_right,slip_amplitude_max,displacement_amplitude";
 
 /// Findley, Crossland and the critical distance (L = (160/700)^2/pi = 0.0166 mm) on a 61 x 31
 /// grid over +-1.5 a and 1.0 a deep.

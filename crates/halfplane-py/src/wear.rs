@@ -8,6 +8,7 @@ use crate::analyses::{csv_keys, SIGNAL_CHECK_INTERVAL};
 use crate::case::{to_toml, PyCase};
 use crate::convert;
 use crate::errors;
+use halfplane::fatigue::{CycleTractions, FatigueResult};
 use halfplane::march::Worn;
 use halfplane::wear::{self, Checkpoint, CheckpointFields, CycleWear, LoopPoint, WornCycle};
 use halfplane::Error;
@@ -53,6 +54,10 @@ impl WornCycle for Watched<'_> {
         }
         self.worn.cycle(depth)
     }
+
+    fn tractions(&mut self) -> halfplane::Result<Option<CycleTractions>> {
+        self.worn.tractions()
+    }
 }
 
 /// The fields of a checkpoint, as `--fields` names its columns after `x`.
@@ -77,19 +82,26 @@ const LOOP: [(&str, LoopValue); 2] = [
 /// the section's fields, e.g. `{"cycles": 1000}`) put in: the report as a dict whose
 /// `checkpoints` are one array per `--csv` column, with `x` (the cell centres) and each field of
 /// `--fields` as a (checkpoints, cells) array, and the fretting loops as (checkpoints, points)
-/// arrays `loop_shear` and `loop_relative_displacement`. A run that stops part way after reaching some
-/// checkpoints returns their report (`stopped` set, `simulated_cycles` None) with the exception
-/// to raise; one that reaches none raises it.
+/// arrays `loop_shear` and `loop_relative_displacement`. With `fatigue` (`--fatigue`), the
+/// checkpoints gain the columns `fatigue.<parameter>.<field>` of the `--csv`, and the second item
+/// of the result lists the parameters `[fatigue]` leaves out (the command's warnings). A run
+/// that stops part way after reaching some checkpoints returns their report (`stopped` set,
+/// `simulated_cycles` None) with the exception to raise; one that reaches none raises it.
 #[pyfunction]
-#[pyo3(signature = (case, cells=None, overrides=None))]
+#[pyo3(signature = (case, cells=None, overrides=None, fatigue=false))]
 pub fn wear_report<'py>(
     py: Python<'py>,
     case: &PyCase,
     cells: Option<usize>,
     overrides: Option<&Bound<'py, PyDict>>,
-) -> PyResult<(Bound<'py, PyDict>, Option<Py<PyBaseException>>)> {
+    fatigue: bool,
+) -> PyResult<(Bound<'py, PyDict>, Vec<String>, Option<Py<PyBaseException>>)> {
     let case = &case.case;
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
+    let evaluator = fatigue
+        .then(|| case.wear_fatigue("the case"))
+        .transpose()
+        .map_err(input)?;
     let settings = match overrides.map(|d| to_toml(d.as_any(), "wear")).transpose()? {
         Some(toml::Value::Table(t)) if !t.is_empty() => case.wear_with(&t),
         _ => case.wear(),
@@ -100,16 +112,38 @@ pub fn wear_report<'py>(
     let mut worn = py
         .detach(|| case.worn_march_named(&settings, cells, "cells"))
         .map_err(input)?;
+    if evaluator.is_some() {
+        worn.record_tractions();
+    }
     let (approach, datum) = (worn.elastic_approach(), worn.loop_datum());
+    let unworn = worn.unworn_contact();
     let mut reached: Vec<Checkpoint> = Vec::new();
+    let mut parameters: Vec<FatigueResult> = Vec::new();
+    let mut fatigue_error = None;
     let mut watched = Watched {
         worn: &mut worn,
         last_check: Instant::now(),
         interrupt: None,
     };
-    let outcome = py.detach(|| wear::run(&mut watched, options, |c| reached.push(c.clone())));
+    let outcome = py.detach(|| {
+        wear::run(&mut watched, options, |c| {
+            if let (Some(f), None) = (&evaluator, &fatigue_error) {
+                match f.evaluate(c, unworn) {
+                    Some(Ok(r)) => parameters.push(r),
+                    Some(Err(e)) => fatigue_error = Some(e),
+                    None => {}
+                }
+            }
+            let mut c = c.clone();
+            c.tractions = None;
+            reached.push(c);
+        })
+    });
     if let Some(interrupt) = watched.interrupt {
         return Err(interrupt);
+    }
+    if let Some(e) = fatigue_error {
+        return Err(input(e));
     }
     let (simulated, stopped) = match &outcome {
         Ok(r) => (Some(r.simulated_cycles), None),
@@ -120,7 +154,7 @@ pub fn wear_report<'py>(
         Err(e) if reached.is_empty() => return Err(errors::from_library(py, &e)),
         Err(e) => Some(errors::from_library(py, &e).into_value(py)),
     };
-    let report = WearReport::new(
+    let mut report = WearReport::new(
         &reached,
         simulated,
         approach,
@@ -129,10 +163,18 @@ pub fn wear_report<'py>(
         &case.units,
         stopped,
     );
+    if evaluator.is_some() {
+        report = report.with_fatigue(&parameters);
+    }
     let (summary, rows) = convert::to_node(&report)?.take("checkpoints");
     let out = summary.into_py(py)?.cast_into::<PyDict>()?;
     let keys = csv_keys(&WearRow::COLUMNS);
-    out.set_item("checkpoints", convert::columns(py, &rows, &keys)?)?;
+    let columns = convert::columns(py, &rows, &keys)?;
+    for (name, values) in report.fatigue_table() {
+        let numbers: Vec<f64> = values.iter().map(|v| v.unwrap_or(f64::NAN)).collect();
+        columns.set_item(name, PyArray1::from_vec(py, numbers))?;
+    }
+    out.set_item("checkpoints", columns)?;
     let x = worn.x().to_vec();
     let shape = [reached.len(), x.len()];
     out.set_item("x", PyArray1::from_vec(py, x))?;
@@ -155,5 +197,6 @@ pub fn wear_report<'py>(
             PyArray1::from_vec(py, values).reshape([reached.len(), points])?,
         )?;
     }
-    Ok((out, error))
+    let skipped = evaluator.map_or_else(Vec::new, |f| f.skipped);
+    Ok((out, skipped, error))
 }

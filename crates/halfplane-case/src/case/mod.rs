@@ -18,7 +18,7 @@ mod wear;
 use count::{count_in, RawCount};
 pub use csv::{read_csv, read_csv_with, Table};
 pub use fatigue::FatigueSettings;
-pub use wear::{WearSettings, DEFAULT_SPAN};
+pub use wear::{WearFatigue, WearSettings, DEFAULT_SPAN};
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
 const MIN_CELLS: usize = MarchOptions::MIN_CELLS;
@@ -245,6 +245,12 @@ impl Case {
     /// `[fatigue]`: the material constants (each validated) and the grid (defaults where absent).
     pub fn fatigue(&self) -> Result<FatigueSettings> {
         fatigue::resolve(self.fatigue.as_ref())
+    }
+
+    /// What `wear --fatigue` evaluates at each checkpoint: `[fatigue]`, which must give
+    /// constants (the error names the case as `source` does).
+    pub fn wear_fatigue(&self, source: &str) -> Result<WearFatigue> {
+        WearFatigue::new(self.contact.material(), self.fatigue()?, source)
     }
 
     /// `[crack]`: the crack's position, angle, lengths and faces (`halfplane crack`).

@@ -3,8 +3,11 @@
 //! grid's width. Every error names the field, the value and what is valid.
 
 use super::count::{count_in, RawCount};
+use super::FatigueSettings;
 use anyhow::{anyhow, bail, Result};
-use halfplane::wear::{Law, WearOptions, MAX_CHECKPOINTS, MAX_CYCLES};
+use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, FatigueResult};
+use halfplane::wear::{Checkpoint, Law, WearOptions, MAX_CHECKPOINTS, MAX_CYCLES};
+use halfplane::Material;
 use toml::Value;
 
 /// The grid's width over the unworn contact's, by default: room for a partial-slip contact
@@ -21,6 +24,53 @@ pub struct WearSettings {
     pub span: f64,
     /// The fretting loop's datum (a length); `None`: the march's default.
     pub loop_datum: Option<f64>,
+}
+
+/// The fatigue parameters of each checkpoint's cycle (`halfplane wear --fatigue`, Python's
+/// `wear(..., fatigue=True)`), with the case's `[fatigue]` constants and grid.
+pub struct WearFatigue {
+    material: Material,
+    constants: FatigueConstants,
+    grid: FatigueGrid,
+    /// The parameters `[fatigue]` leaves out, one line each (the warnings).
+    pub skipped: Vec<String>,
+}
+
+impl WearFatigue {
+    /// `[fatigue]` of the case `source` names (in the error when it gives no constant).
+    pub(super) fn new(material: Material, settings: FatigueSettings, source: &str) -> Result<Self> {
+        if settings.constants == FatigueConstants::default() {
+            bail!(
+                "--fatigue needs material constants in [fatigue], and {source} gives none: add the \
+                 constants of the parameters to report (fatigue.findley_k, \
+                 fatigue.crossland_alpha, fatigue.fatemi_socie_k with fatigue.yield_stress, \
+                 fatigue.axial_fatigue_limit with fatigue.torsional_fatigue_limit, \
+                 fatigue.mcdiarmid_shear_limit with fatigue.ultimate_strength, the \
+                 strain-life constants, fatigue.threshold with fatigue.endurance_range; \
+                 docs/fatigue.md)"
+            );
+        }
+        Ok(Self {
+            material,
+            skipped: settings.skipped(),
+            constants: settings.constants,
+            grid: settings.grid,
+        })
+    }
+
+    /// The parameters over the checkpoint's cycle, on the `[fatigue]` grid scaled on the unworn
+    /// contact `[b1, b2]`; `None` when the march did not record the cycle's tractions.
+    pub fn evaluate(
+        &self,
+        checkpoint: &Checkpoint,
+        unworn: [f64; 2],
+    ) -> Option<Result<FatigueResult>> {
+        let cycle = checkpoint.tractions.as_ref()?;
+        Some(
+            fatigue::analyse_cycle(&self.material, cycle, unworn, &self.constants, &self.grid)
+                .map_err(|e| anyhow!("--fatigue at cycle {}: {e}", checkpoint.cycle)),
+        )
+    }
 }
 
 /// Resolves `[wear]` (required by `halfplane wear`).

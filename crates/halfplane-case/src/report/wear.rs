@@ -284,30 +284,49 @@ impl WearReport {
         columns
     }
 
+    /// The `--fatigue` columns, `fatigue.<parameter>.<field>`, each with its value at every
+    /// checkpoint (`None` where a checkpoint has none): the CSV's extra columns, Python's too.
+    pub fn fatigue_table(&self) -> Vec<(String, Vec<Option<f64>>)> {
+        self.fatigue_columns()
+            .into_iter()
+            .map(|(name, field)| {
+                let values = self
+                    .checkpoints
+                    .iter()
+                    .map(|row| {
+                        let f = row.fatigue.as_ref()?;
+                        let (_, m) = f.0.iter().find(|(k, _)| *k == name)?;
+                        m.fields()
+                            .into_iter()
+                            .find(|(g, _)| *g == field)
+                            .map(|(_, v)| v)
+                    })
+                    .collect();
+                (format!("fatigue.{name}.{field}"), values)
+            })
+            .collect()
+    }
+
     /// One CSV row per checkpoint; with `--fatigue`, the columns `fatigue.<parameter>.<field>`
     /// after the others.
     pub fn csv(&self) -> String {
         let text = super::csv(&WearRow::COLUMNS, &self.checkpoints);
-        let columns = self.fatigue_columns();
+        let columns = self.fatigue_table();
         if columns.is_empty() {
             return text;
         }
         let mut o = String::new();
         let mut lines = text.lines();
         o.push_str(lines.next().unwrap_or_default());
-        for (name, field) in &columns {
-            let _ = write!(o, ",fatigue.{name}.{field}");
+        for (name, _) in &columns {
+            let _ = write!(o, ",{name}");
         }
         o.push('\n');
-        for (line, row) in lines.zip(&self.checkpoints) {
+        for (k, line) in lines.enumerate() {
             o.push_str(line);
-            for (name, field) in &columns {
+            for (_, values) in &columns {
                 o.push(',');
-                let value = row.fatigue.as_ref().and_then(|f| {
-                    let (_, m) = f.0.iter().find(|(k, _)| k == name)?;
-                    m.fields().into_iter().find(|(g, _)| g == field)
-                });
-                if let Some((_, v)) = value {
+                if let Some(v) = values[k] {
                     let _ = write!(o, "{v}");
                 }
             }

@@ -5,24 +5,12 @@ use crate::output::{emit, note};
 use crate::progress::Progress;
 use crate::report::wear::{fields_csv, loop_csv, WearReport};
 use crate::units::Units;
-use anyhow::{anyhow, bail, Result};
-use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, FatigueResult};
+use anyhow::{anyhow, Result};
+use halfplane::fatigue::FatigueResult;
 use halfplane::march::Worn;
 use halfplane::wear::{self, Checkpoint, WearOptions, WornCycle};
-use halfplane::Material;
+use halfplane_case::case::WearFatigue;
 use std::path::PathBuf;
-
-/// `--fatigue`: what each checkpoint's cycle is evaluated with.
-pub struct WearFatigue {
-    /// The specimen's material.
-    pub material: Material,
-    /// `[fatigue]` constants.
-    pub constants: FatigueConstants,
-    /// `[fatigue]` grid, scaled on the unworn contact.
-    pub grid: FatigueGrid,
-    /// The parameters `[fatigue]` leaves out, one line each, for stderr.
-    pub skipped: Vec<String>,
-}
 
 /// What `wear` runs on.
 pub struct WearConfig {
@@ -46,29 +34,10 @@ impl WearConfig {
     pub fn resolve(args: &WearArgs) -> Result<Self> {
         let case = crate::case::load(&args.case)?;
         let settings = case.wear()?;
-        let fatigue = if args.fatigue {
-            let f = case.fatigue()?;
-            if f.constants == FatigueConstants::default() {
-                bail!(
-                    "--fatigue needs material constants in [fatigue], and {} gives none: add the \
-                     constants of the parameters to report (fatigue.findley_k, \
-                     fatigue.crossland_alpha, fatigue.fatemi_socie_k with fatigue.yield_stress, \
-                     fatigue.axial_fatigue_limit with fatigue.torsional_fatigue_limit, \
-                     fatigue.mcdiarmid_shear_limit with fatigue.ultimate_strength, the \
-                     strain-life constants, fatigue.threshold with fatigue.endurance_range; \
-                     docs/fatigue.md)",
-                    args.case.display()
-                );
-            }
-            Some(WearFatigue {
-                material: case.contact.material(),
-                constants: f.constants,
-                grid: f.grid,
-                skipped: f.skipped(),
-            })
-        } else {
-            None
-        };
+        let fatigue = args
+            .fatigue
+            .then(|| case.wear_fatigue(&args.case.display().to_string()))
+            .transpose()?;
         let mut worn = case.worn_march(&settings, args.cells)?;
         if fatigue.is_some() {
             worn.record_tractions();
@@ -127,10 +96,11 @@ pub fn run(config: WearConfig) -> Result<()> {
                 }
             }
         }
-        if let (Some(f), Some(cycle), None) = (&fatigue, &c.tractions, &fatigue_error) {
-            match fatigue::analyse_cycle(&f.material, cycle, unworn, &f.constants, &f.grid) {
-                Ok(r) => parameters.push(r),
-                Err(e) => fatigue_error = Some(anyhow!("--fatigue at cycle {}: {e}", c.cycle)),
+        if let (Some(f), None) = (&fatigue, &fatigue_error) {
+            match f.evaluate(c, unworn) {
+                Some(Ok(r)) => parameters.push(r),
+                Some(Err(e)) => fatigue_error = Some(e),
+                None => {}
             }
         }
         let mut c = c.clone();

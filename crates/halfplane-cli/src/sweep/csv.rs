@@ -166,7 +166,7 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
                 }
                 let _ = write!(s, ",{}", w.simulated_cycles);
             }
-            None => s.push_str(",,,,,,,,,,,"),
+            None => s.push_str(&",".repeat(super::WEAR_COLUMNS.len())),
         }
     }
     s.push('\n');
