@@ -1,7 +1,7 @@
 //! Several contact-edge crossings in one sub-step, against one sub-step per crossing: a dense,
 //! stand-alone measurement (BENCHMARKS.md, issue 20, "Several edge crossings per sub-step").
 //! Not part of the workspace: `rustc -O benches/multi-crossing/main.rs -o target/multi-crossing`,
-//! then `target/multi-crossing CELLS STEPS_PER_HALF` (see README.md).
+//! then `target/multi-crossing CELLS STEPS_PER_HALF [bands]` (see README.md).
 //!
 //! Hertz (R = 50, E = 200 GPa, nu = 0.3, f = 0.6), a normal ramp to P = 1000 in 10 increments,
 //! then two in-phase cycles to (P, Q, sigma) = (1400, 100, 5) and back: eq. (1) holds, so exact
@@ -23,6 +23,13 @@
 //! The entering row k then reads `sum_j G_kj dq_j (1 - R_j(tau_k)) / (1 - tau_k) + (bulk) - c = 0`
 //! with `R_j` the profile (for `linear`, `1 - R_j(tau_k)` over `1 - tau_k` is
 //! `1 / (1 - min(tau_j, tau_k))` between entering cells and 1 otherwise: a symmetric system).
+//! Band (local time stepping): the whole increment in one system, with knots at every crossing;
+//! the crossing cells and the contact cells within `band` cells inside the smaller contact carry
+//! one unknown traction increment per knot interval and stick rows on each interval they are in
+//! contact (a leaving cell's traction reaches zero at its crossing), the other cells one
+//! increment linear over the increment and a stick row over it, with one rigid shift per
+//! interval and the resultant held at every knot. With the band covering the contact it is the
+//! reference.
 //!
 //! Conventions as in crates/halfplane/src/march: `h(x) = -(A/pi) int q ln|xi - x| dxi
 //! + (A/4) sigma x + C` (A = 4(1 - nu^2)/E), traction positive in +x, p = sqrt(a^2 - x^2)/(R A),
@@ -149,6 +156,9 @@ struct March<'g> {
     profile: Profile,
     /// At most this many crossings per edge in a sub-step; 0: one sub-step per crossing.
     cap: usize,
+    /// Local time stepping: cells within this many cells of a moving edge resolved at every
+    /// crossing, the rest linear in time over the increment.
+    band: Option<usize>,
     traction: Vec<f64>,
     load: Load,
     /// Largest `|q| / (f p)` at a sub-step end since the last reset.
@@ -182,7 +192,12 @@ impl March<'_> {
                     role
                 })
                 .collect();
-        if self.cap == 0 {
+        if let Some(d) = self.band {
+            crossings.sort_by(f64::total_cmp);
+            crossings.dedup();
+            crossings.retain(|t| *t > 0.0 && *t < 1.0);
+            self.banded(from, to, &roles, &crossings, d, a0.min(a1));
+        } else if self.cap == 0 {
             crossings.sort_by(f64::total_cmp);
             crossings.dedup();
             let mut start = 0.0;
@@ -199,6 +214,143 @@ impl March<'_> {
             }
         }
         self.load = to;
+    }
+
+    /// The whole increment in one solve: knots at every crossing; cells near the edges (the
+    /// crossing cells and contact cells within `d` cells inside the smaller contact) carry one
+    /// unknown increment per knot interval, the others one increment linear in time.
+    fn banded(
+        &mut self,
+        from: Load,
+        to: Load,
+        roles: &[Role],
+        knots: &[f64],
+        d: usize,
+        a2_min: f64,
+    ) {
+        let g = self.grid;
+        let n = g.x.len();
+        let mut t = vec![0.0];
+        t.extend_from_slice(knots);
+        t.push(1.0);
+        let m = t.len() - 1;
+        let inner = a2_min.sqrt() - d as f64 * g.width;
+        // in contact over interval s, and whether it leaves at its end
+        let in_contact = |i: usize, s: usize| -> bool {
+            match roles[i] {
+                Role::In => true,
+                Role::Enters(tau) => tau <= t[s],
+                Role::Leaves(tau) => tau >= t[s + 1],
+                Role::Out => false,
+            }
+        };
+        let leaves_at =
+            |i: usize, s: usize| matches!(roles[i], Role::Leaves(tau) if tau == t[s + 1]);
+        let mut far = Vec::new();
+        let mut band = Vec::new();
+        for i in 0..n {
+            match roles[i] {
+                Role::Out => {}
+                Role::In if g.x[i].abs() < inner => far.push(i),
+                _ => band.push(i),
+            }
+        }
+        // variable indices
+        let mut idx = std::collections::BTreeMap::new();
+        let mut nv = far.len();
+        for &j in &band {
+            for s in 0..m {
+                if in_contact(j, s) {
+                    idx.insert((j, s), nv);
+                    nv += 1;
+                }
+            }
+        }
+        let c0 = nv;
+        nv += m;
+        let mut a = vec![0.0; nv * nv];
+        let mut b = vec![0.0; nv];
+        let mut row = 0;
+        let d_bulk = to.bulk - from.bulk;
+        let d_shear = to.shear - from.shear;
+        // far rows: over the whole increment
+        for &i in &far {
+            for (c, &j) in far.iter().enumerate() {
+                a[row * nv + c] = g.kernel[i * n + j];
+            }
+            for (&(j, _), &v) in &idx {
+                a[row * nv + v] = g.kernel[i * n + j];
+            }
+            for s in 0..m {
+                a[row * nv + c0 + s] = -1.0;
+            }
+            b[row] = 0.25 * PI * d_bulk * g.x[i];
+            row += 1;
+        }
+        // band rows per interval
+        for &k in &band {
+            for s in 0..m {
+                if !in_contact(k, s) {
+                    continue;
+                }
+                if leaves_at(k, s) {
+                    // traction to zero at the end of the interval
+                    for s2 in 0..=s {
+                        a[row * nv + idx[&(k, s2)]] = 1.0;
+                    }
+                    b[row] = -self.traction[k];
+                    row += 1;
+                    continue;
+                }
+                let h = t[s + 1] - t[s];
+                for (c, &j) in far.iter().enumerate() {
+                    a[row * nv + c] = g.kernel[k * n + j] * h;
+                }
+                for &j in &band {
+                    if let Some(&v) = idx.get(&(j, s)) {
+                        a[row * nv + v] = g.kernel[k * n + j];
+                    }
+                }
+                a[row * nv + c0 + s] = -1.0;
+                b[row] = 0.25 * PI * d_bulk * h * g.x[k];
+                row += 1;
+            }
+        }
+        // resultant per interval
+        for s in 0..m {
+            let h = t[s + 1] - t[s];
+            for c in 0..far.len() {
+                a[row * nv + c] = g.width * h;
+            }
+            for &j in &band {
+                if let Some(&v) = idx.get(&(j, s)) {
+                    a[row * nv + v] = g.width;
+                }
+            }
+            b[row] = d_shear * h;
+            row += 1;
+        }
+        assert_eq!(row, nv);
+        let z = solve(a, b);
+        for (c, &j) in far.iter().enumerate() {
+            self.traction[j] += z[c];
+        }
+        for (&(j, _), &v) in &idx {
+            self.traction[j] += z[v];
+        }
+        let a2_end = g.half_width_squared(to.normal);
+        for i in 0..n {
+            let inside = match roles[i] {
+                Role::In | Role::Enters(_) => true,
+                _ => false,
+            };
+            if !inside {
+                self.traction[i] = 0.0;
+                continue;
+            }
+            let p = g.pressure(g.x[i], a2_end);
+            self.max_ratio = self.max_ratio.max(self.traction[i].abs() / (FRICTION * p));
+        }
     }
 
     /// The sub-step over the increment fractions `[s0, s1]`.
@@ -299,7 +451,13 @@ impl March<'_> {
 
 /// The run: the increment-end tractions of the two cycles, the largest `|q| / (f p)` in them and
 /// the difference between the cycles' last tractions.
-fn run(grid: &Grid, steps: usize, cap: usize, profile: Profile) -> (Vec<Vec<f64>>, f64, f64) {
+fn run(
+    grid: &Grid,
+    steps: usize,
+    cap: usize,
+    profile: Profile,
+    band: Option<usize>,
+) -> (Vec<Vec<f64>>, f64, f64) {
     let low = Load {
         normal: 1000.0,
         shear: 0.0,
@@ -314,6 +472,7 @@ fn run(grid: &Grid, steps: usize, cap: usize, profile: Profile) -> (Vec<Vec<f64>
         grid,
         profile,
         cap,
+        band,
         traction: vec![0.0; grid.x.len()],
         load: Load {
             normal: 1e-9,
@@ -360,37 +519,53 @@ fn main() {
     let probe = Grid::new(2, 1.0);
     let grid = Grid::new(cells, 1.01 * probe.half_width_squared(1400.0).sqrt());
     let p0 = grid.pressure(0.0, grid.half_width_squared(1400.0));
-    let (reference, ratio, reversal) = run(&grid, steps, 0, Profile::Linear);
+    let (reference, ratio, reversal) = run(&grid, steps, 0, Profile::Linear, None);
     println!(
         "cells {cells}, {steps} steps per half; traction differences in f p0 = {:.1} N/mm^2",
         FRICTION * p0
     );
-    println!("scheme                         | max |q|/(f p) | cycle 2 - cycle 1 | max vs reference | at half ends");
-    println!("one sub-step per crossing      | {ratio:.4}        | {:.1e}           |                  |", reversal / (FRICTION * p0));
+    println!("scheme                                         | max |q|/(f p) | cycle 2 - cycle 1 | max vs reference | at half ends");
+    println!("                      one sub-step per crossing | {ratio:.4}        | {:.1e}           |                  |", reversal / (FRICTION * p0));
+    let mut variants: Vec<(String, usize, Profile, Option<usize>)> = Vec::new();
     for profile in [Profile::Linear, Profile::Pressure] {
         for cap in [1, 4, usize::MAX] {
-            let (ends, ratio, reversal) = run(&grid, steps, cap, profile);
-            let each: Vec<f64> = ends
-                .iter()
-                .zip(&reference)
-                .map(|(a, b)| max_difference(a, b) / (FRICTION * p0))
-                .collect();
-            let worst = each.iter().copied().fold(0.0, f64::max);
-            let half_ends = (1..=4).map(|h| each[h * steps - 1]).fold(0.0, f64::max);
             let name = if profile == Profile::Linear {
                 "linear"
             } else {
                 "pressure"
             };
-            let cap = if cap == usize::MAX {
-                "all".to_string()
+            let cap_name = if cap == usize::MAX {
+                "all crossings in one sub-step".to_string()
             } else {
-                cap.to_string()
+                format!("at most {cap} crossings per edge")
             };
-            println!(
-                "{name:>8}, crossings per edge {cap:>3} | {ratio:.4}        | {:.1e}           | {worst:.2e}         | {half_ends:.1e}",
-                reversal / (FRICTION * p0)
-            );
+            variants.push((format!("{name}, {cap_name}"), cap, profile, None));
         }
+    }
+    for band in [2, 8, 32] {
+        variants.push((
+            format!("band of {band} cells, knots at crossings"),
+            0,
+            Profile::Linear,
+            Some(band),
+        ));
+    }
+    let only_bands = std::env::args().nth(3).as_deref() == Some("bands");
+    for (name, cap, profile, band) in variants {
+        if only_bands && band.is_none() {
+            continue;
+        }
+        let (ends, ratio, reversal) = run(&grid, steps, cap, profile, band);
+        let each: Vec<f64> = ends
+            .iter()
+            .zip(&reference)
+            .map(|(a, b)| max_difference(a, b) / (FRICTION * p0))
+            .collect();
+        let worst = each.iter().copied().fold(0.0, f64::max);
+        let half_ends = (1..=4).map(|h| each[h * steps - 1]).fold(0.0, f64::max);
+        println!(
+            "{name:>46} | {ratio:.4}        | {:.1e}           | {worst:.2e}         | {half_ends:.1e}",
+            reversal / (FRICTION * p0)
+        );
     }
 }
