@@ -261,8 +261,11 @@ impl Marcher {
     /// `c dP / (pi sqrt(2 a s))` against a pressure `K_N sqrt(s)` (s from the edge), so cells
     /// just inside an advancing edge slipped forward on every rising half (a ratchet that
     /// dissipated even in full stick, with an energy growing like the squared edge advance per
-    /// increment, not with the cell size). The sub-steps are reported as one increment, with
-    /// the energy their sum.
+    /// increment, not with the cell size). Several cells entering in one sub-step, each stuck
+    /// from its own crossing fraction with a traction linear in time after it, was measured and
+    /// not adopted: it lifted cells near the edge from 0.43 to 0.61-0.79 of the friction limit on
+    /// a full-stick cycle (BENCHMARKS.md, issue 20). The sub-steps are reported as one increment,
+    /// with the energy their sum.
     pub fn step(&mut self, load: LoadPoint) -> Result<StepReport> {
         let step = self.step + 1;
         let name = format!("history row {step}");
