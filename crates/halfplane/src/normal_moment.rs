@@ -363,8 +363,8 @@ impl Contact {
     /// [`Contact::contact_near`] from a guessed contact `(c, a)` (a > 0, a prediction along a
     /// load path) instead of a solved one, to the relative step `tolerance` (at least 1e-15, the
     /// solve to rounding; a looser one suits contacts that only bound a quantity along a path,
-    /// far inside the bound's own margin, and its K_N are those of Newton's Jacobian: about 1e-7
-    /// for the power law, exact for piecewise profiles). The bracketed solve (to rounding) when
+    /// far inside the bound's own margin; its rotation and K_N are good to about the square
+    /// root of the tolerance). The bracketed solve (to rounding) when
     /// Newton does not settle.
     pub(crate) fn contact_from(
         &self,
@@ -388,8 +388,9 @@ impl Contact {
 
     /// Newton's method on both resultants, `(A P, A M)` against `(c, a)` with the exact Jacobian
     /// (module docs), from `(c, a)`: at most 8 steps, stopping at a step of `tolerance` times
-    /// `a + |c|` (1e-15 is the bracketed solve's rule, so the two agree to rounding). `None` when
-    /// a step leaves the profile or is not finite, or Newton has not settled.
+    /// `a + |c|` (1e-15 is the bracketed solve's rule, so the two agree to rounding); a looser
+    /// tolerance also stops after a step below its square root, keeping the stepped contact.
+    /// `None` when a step leaves the profile or is not finite, or Newton has not settled.
     fn newton(
         &self,
         normal: f64,
@@ -402,11 +403,7 @@ impl Contact {
         let (target_p, target_m) = (a_comp * normal, a_comp * moment);
         let (mut c, mut a) = (c, a);
         for _ in 0..8 {
-            let Ok(r) = self
-                .profile
-                .contact_integrals_for_newton(c, a)
-                .map(|s| Resultants::new(c, a, &s))
-            else {
+            let Ok(r) = self.resultants(c, a) else {
                 return Ok(None);
             };
             let (f1, f2) = (r.load - target_p, r.moment - target_m);
@@ -416,14 +413,18 @@ impl Contact {
             if !(step_c.is_finite() && step_a.is_finite()) || a + step_a <= 0.0 {
                 return Ok(None);
             }
-            if step_c.abs().max(step_a.abs()) <= tolerance * (a + c.abs()) {
-                // K_N from the accurate derivatives (the same ones for piecewise profiles) for a
-                // contact solved to rounding; a looser one only bounds a quantity.
-                let r = match self.profile.shape() {
-                    Shape::PowerLaw { .. } if tolerance <= 1e-15 => self.resultants(c, a)?,
-                    _ => r,
-                };
+            let (size, scale) = (step_c.abs().max(step_a.abs()), a + c.abs());
+            if size <= tolerance * scale {
                 return self.finish(normal, moment, c, a, &r).map(Some);
+            }
+            if tolerance > 1e-15 && size * size <= tolerance * scale * scale {
+                // A loose solve: with a Lipschitz Jacobian the step from a point `size` off
+                // lands about size^2/scale from the root, inside the tolerance, so the stepped
+                // contact is taken without another evaluation (its rotation and K_N are those
+                // before the step, good to about `size`).
+                return self
+                    .finish(normal, moment, c + step_c, a + step_a, &r)
+                    .map(Some);
             }
             c += step_c;
             a += step_a;

@@ -34,16 +34,6 @@ impl Profile {
             Slope::Power(p) => Ok(p.contact_integrals(c, a)),
         }
     }
-
-    /// [`Profile::contact_integrals`] with derivatives good enough to steer Newton's method but
-    /// not to report K_N: for the power law a forward difference (two quadratures instead of
-    /// five, derivatives to about 1e-7); the exact ones for every other profile.
-    pub(crate) fn contact_integrals_for_newton(&self, c: f64, a: f64) -> Result<ContactIntegrals> {
-        match &self.slope {
-            Slope::Pieces(p) => p.contact_integrals(c, a),
-            Slope::Power(p) => Ok(p.contact_integrals_forward(c, a)),
-        }
-    }
 }
 
 /// `sum_k poly[k] m[k + shift]`: the integral of `poly(cos phi) cos^shift phi` from the moments
@@ -120,40 +110,18 @@ impl Pieces {
 }
 
 impl PowerSlope {
-    /// `I_j` by the Gauss-Jacobi rule ([`PowerSlope::weighted`]); `dI_j/dc` by the five-point
-    /// central difference with step `1e-3 a` (truncation `h^4 I^(5)/30`, about 3e-14 relative,
-    /// rounding about 1e-13), and `dI_j/da` from homogeneity: g' is homogeneous of degree `k - 1`,
-    /// so `c dI/dc + a dI/da = (k - 1) I`.
+    /// `I_j` by the Gauss-Jacobi rule and `dI_j/dc` by the same nodes on g''
+    /// ([`PowerSlope::weighted`]), and `dI_j/da` from homogeneity: g' is homogeneous of degree
+    /// `k - 1`, so `c dI/dc + a dI/da = (k - 1) I`.
     pub(super) fn contact_integrals(&self, c: f64, a: f64) -> ContactIntegrals {
-        let i = self.weighted(a, c);
-        let h = 1e-3 * a;
-        let at = |t: f64| self.weighted(a, c + t * h);
-        let (m2, m1, p1, p2) = (at(-2.0), at(-1.0), at(1.0), at(2.0));
+        let (i, i_c) = self.weighted(a, c);
         let mut out = ContactIntegrals {
             i,
+            i_c,
             ..ContactIntegrals::default()
         };
         for j in 0..3 {
-            out.i_c[j] = (m2[j] - 8.0 * m1[j] + 8.0 * p1[j] - p2[j]) / (12.0 * h);
-            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * out.i_c[j]) / a;
-        }
-        out
-    }
-
-    /// [`PowerSlope::contact_integrals`] with `dI_j/dc` by a forward difference of step `1e-7 a`
-    /// (error about 1e-7 relative): the Jacobian of Newton's steps, whose answer is set by the
-    /// values alone.
-    pub(super) fn contact_integrals_forward(&self, c: f64, a: f64) -> ContactIntegrals {
-        let i = self.weighted(a, c);
-        let h = 1e-7 * a;
-        let ahead = self.weighted(a, c + h);
-        let mut out = ContactIntegrals {
-            i,
-            ..ContactIntegrals::default()
-        };
-        for j in 0..3 {
-            out.i_c[j] = (ahead[j] - i[j]) / h;
-            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * out.i_c[j]) / a;
+            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * i_c[j]) / a;
         }
         out
     }
