@@ -66,11 +66,18 @@ impl Pieces {
         };
         let mut out = ContactIntegrals::default();
         let first = self.pieces.partition_point(|p| p.end <= lo);
-        let (mut cb, mut sb) = (-1.0, 0.0);
+        // The angle at the current piece's start, unknown after a skipped piece.
+        let mut start = Some((-1.0, 0.0));
         for p in &self.pieces[first..] {
             if p.start >= hi {
                 break;
             }
+            if p.coeffs == [0.0; 3] {
+                // g' = 0 here (a pad's flat): it adds nothing, and its angles are not needed.
+                start = None;
+                continue;
+            }
+            let (cb, sb) = start.unwrap_or_else(|| angle(p.start));
             let (ca, sa) = angle(p.end);
             let mut m = [0.0; 5];
             m[0] = angle_between(ca, sa, cb, sb);
@@ -78,7 +85,7 @@ impl Pieces {
             m[2] = 0.5 * (cb * sb - ca * sa) + 0.5 * m[0];
             m[3] = (cb * cb * sb - ca * ca * sa) / 3.0 + 2.0 / 3.0 * m[1];
             m[4] = 0.25 * (cb * cb * cb * sb - ca * ca * ca * sa) + 0.75 * m[2];
-            (cb, sb) = (ca, sa);
+            start = Some((ca, sa));
             let [q0, q1, q2] = p.coeffs;
             let u = c - p.origin;
             let g = [q0 + u * (q1 + u * q2), a * (q1 + 2.0 * u * q2), a * a * q2];
