@@ -53,7 +53,9 @@ impl SegmentPath {
         let mut samples = vec![(0.0, low)];
         if !centred {
             let (d_normal, d_moment) = (to.normal() - from.normal(), to.moment() - from.moment());
-            let predict = ends_predictor(&low, &high, d_normal, d_moment);
+            // Hertz's contacts are closed forms (contact_from ignores the start): no cubic.
+            let cubic = !matches!(contact.profile().shape(), Shape::Hertz { .. });
+            let predict = ends_predictor(&low, &high, d_normal, d_moment, cubic);
             for k in 1..INTERVALS {
                 let t = k as f64 / INTERVALS as f64;
                 let point = from.lerp(&to, t);
@@ -166,21 +168,25 @@ impl RateBounds {
 /// A prediction `t -> (c, a)` of the contacts between `low` (t = 0) and `high` (t = 1) when P
 /// and M change by `d_normal` and `d_moment` along the segment: the cubic Hermite interpolant of
 /// each end through both contacts with the ends' slopes [`edge_speeds`] (error of order a
-/// fourth derivative of the end over 384), or the straight line between them where a speed is
-/// not finite (K_N = 0 at an end).
+/// fourth derivative of the end over 384), or the straight line between them when `cubic` is
+/// false or a speed is not finite (K_N = 0 at an end).
 fn ends_predictor(
     low: &NormalContact,
     high: &NormalContact,
     d_normal: f64,
     d_moment: f64,
+    cubic: bool,
 ) -> impl Fn(f64) -> (f64, f64) {
-    let (s0, s1) = (
-        edge_speeds(low, d_normal, d_moment),
-        edge_speeds(high, d_normal, d_moment),
-    );
     // db/dt: the left end moves outwards towards -x.
-    let slopes = |s: PerEdge<f64>| [-s.left, s.right];
-    let (m0, m1) = (slopes(s0), slopes(s1));
+    let slopes = |c: &NormalContact| {
+        let s = edge_speeds(c, d_normal, d_moment);
+        [-s.left, s.right]
+    };
+    let (m0, m1) = if cubic {
+        (slopes(low), slopes(high))
+    } else {
+        ([f64::NAN; 2], [f64::NAN; 2])
+    };
     let finite = m0.iter().chain(&m1).all(|m| m.is_finite());
     let (y0, y1) = (
         [low.end(Edge::Left), low.end(Edge::Right)],
