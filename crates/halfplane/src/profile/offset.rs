@@ -34,16 +34,6 @@ impl Profile {
             Slope::Power(p) => Ok(p.contact_integrals(c, a)),
         }
     }
-
-    /// [`Profile::contact_integrals`] with derivatives good enough to steer Newton's method but
-    /// not to report K_N: for the power law a forward difference (two quadratures instead of
-    /// five, derivatives to about 1e-7); the exact ones for every other profile.
-    pub(crate) fn contact_integrals_for_newton(&self, c: f64, a: f64) -> Result<ContactIntegrals> {
-        match &self.slope {
-            Slope::Pieces(p) => p.contact_integrals(c, a),
-            Slope::Power(p) => Ok(p.contact_integrals_forward(c, a)),
-        }
-    }
 }
 
 /// `sum_k poly[k] m[k + shift]`: the integral of `poly(cos phi) cos^shift phi` from the moments
@@ -76,11 +66,18 @@ impl Pieces {
         };
         let mut out = ContactIntegrals::default();
         let first = self.pieces.partition_point(|p| p.end <= lo);
-        let (mut cb, mut sb) = (-1.0, 0.0);
+        // The angle at the current piece's start, unknown after a skipped piece.
+        let mut start = Some((-1.0, 0.0));
         for p in &self.pieces[first..] {
             if p.start >= hi {
                 break;
             }
+            if p.coeffs == [0.0; 3] {
+                // g' = 0 here (a pad's flat): it adds nothing, and its angles are not needed.
+                start = None;
+                continue;
+            }
+            let (cb, sb) = start.unwrap_or_else(|| angle(p.start));
             let (ca, sa) = angle(p.end);
             let mut m = [0.0; 5];
             m[0] = angle_between(ca, sa, cb, sb);
@@ -88,7 +85,7 @@ impl Pieces {
             m[2] = 0.5 * (cb * sb - ca * sa) + 0.5 * m[0];
             m[3] = (cb * cb * sb - ca * ca * sa) / 3.0 + 2.0 / 3.0 * m[1];
             m[4] = 0.25 * (cb * cb * cb * sb - ca * ca * ca * sa) + 0.75 * m[2];
-            (cb, sb) = (ca, sa);
+            start = Some((ca, sa));
             let [q0, q1, q2] = p.coeffs;
             let u = c - p.origin;
             let g = [q0 + u * (q1 + u * q2), a * (q1 + 2.0 * u * q2), a * a * q2];
@@ -120,40 +117,18 @@ impl Pieces {
 }
 
 impl PowerSlope {
-    /// `I_j` by the Gauss-Jacobi rule ([`PowerSlope::weighted`]); `dI_j/dc` by the five-point
-    /// central difference with step `1e-3 a` (truncation `h^4 I^(5)/30`, about 3e-14 relative,
-    /// rounding about 1e-13), and `dI_j/da` from homogeneity: g' is homogeneous of degree `k - 1`,
-    /// so `c dI/dc + a dI/da = (k - 1) I`.
+    /// `I_j` by the Gauss-Jacobi rule and `dI_j/dc` by the same nodes on g''
+    /// ([`PowerSlope::weighted`]), and `dI_j/da` from homogeneity: g' is homogeneous of degree
+    /// `k - 1`, so `c dI/dc + a dI/da = (k - 1) I`.
     pub(super) fn contact_integrals(&self, c: f64, a: f64) -> ContactIntegrals {
-        let i = self.weighted(a, c);
-        let h = 1e-3 * a;
-        let at = |t: f64| self.weighted(a, c + t * h);
-        let (m2, m1, p1, p2) = (at(-2.0), at(-1.0), at(1.0), at(2.0));
+        let (i, i_c) = self.weighted(a, c);
         let mut out = ContactIntegrals {
             i,
+            i_c,
             ..ContactIntegrals::default()
         };
         for j in 0..3 {
-            out.i_c[j] = (m2[j] - 8.0 * m1[j] + 8.0 * p1[j] - p2[j]) / (12.0 * h);
-            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * out.i_c[j]) / a;
-        }
-        out
-    }
-
-    /// [`PowerSlope::contact_integrals`] with `dI_j/dc` by a forward difference of step `1e-7 a`
-    /// (error about 1e-7 relative): the Jacobian of Newton's steps, whose answer is set by the
-    /// values alone.
-    pub(super) fn contact_integrals_forward(&self, c: f64, a: f64) -> ContactIntegrals {
-        let i = self.weighted(a, c);
-        let h = 1e-7 * a;
-        let ahead = self.weighted(a, c + h);
-        let mut out = ContactIntegrals {
-            i,
-            ..ContactIntegrals::default()
-        };
-        for j in 0..3 {
-            out.i_c[j] = (ahead[j] - i[j]) / h;
-            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * out.i_c[j]) / a;
+            out.i_a[j] = ((self.exponent - 1.0) * i[j] - c * i_c[j]) / a;
         }
         out
     }

@@ -359,17 +359,23 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
         &cycle.high(),
         0.5 * (low.rotation() + high.rotation()),
     );
-    // Under a moment, a start from the end contacts (the smaller scaled to P_K as Hertz's
-    // a ~ sqrt(P), centred between the two) instead of the fresh normal solves of `zone_guess`.
-    let guess = (!path.is_centred()).then(|| {
+    // Under a moment, a start from the end contacts (the smaller scaled to P_K as
+    // a ~ P^n, centred between the two) instead of the fresh normal solves of `zone_guess`
+    // (none for Hertz's closed-form zone).
+    let closed_form =
+        options.method() == Method::Auto && matches!(contact.profile.shape(), Shape::Hertz { .. });
+    let guess = (!path.is_centred() && !closed_form).then(|| {
+        let p_k = 0.5 * segment.normal_sum - segment.shear_range / (2.0 * f);
+        if let Some(found) = power_law_zone_guess(contact, &segment, p_k) {
+            return found;
+        }
         let small = if low.half_width() < high.half_width() {
             low
         } else {
             high
         };
-        let p_k = 0.5 * segment.normal_sum - segment.shear_range / (2.0 * f);
         (
-            small.half_width() * (p_k.max(0.0) / small.normal()).sqrt(),
+            small.half_width() * (p_k.max(0.0) / small.normal()).powf(load_exponent(&small)),
             0.5 * (low.centre() + high.centre()),
         )
     });
@@ -394,6 +400,38 @@ pub fn analyse(contact: &Contact, cycle: &Cycle, options: &SteadyOptions) -> Res
     });
     state.iterations = iterations;
     Ok(state)
+}
+
+/// For a power law, the stick zone's start `(d, e)` from closed forms: the zone is the contact
+/// under `p_k` with the rotation `tilt = theta_m + A dsigma/(8f)` ([`zone_guess`]); the moment
+/// giving the symmetric contact (no rotation) that tilt to first order is
+/// `M = -tilt pi a0^2/(2A)` ([`NormalContact::rotation_change`]), and that contact is
+/// [`Contact::power_law_guess`]. `None` for other profiles or `p_k <= 0`.
+fn power_law_zone_guess(contact: &Contact, segment: &Segment, p_k: f64) -> Option<(f64, f64)> {
+    if p_k <= 0.0 || !matches!(contact.profile.shape(), Shape::PowerLaw { .. }) {
+        return None;
+    }
+    let a_comp = contact.compliance().value();
+    let f = contact.friction.value();
+    let tilt = segment.rotation + a_comp * segment.bulk_range / (8.0 * f);
+    let a0 = contact.half_width(p_k).ok()?;
+    let moment = -tilt * PI * a0 * a0 / (2.0 * a_comp);
+    let (c, a) = contact.power_law_guess(p_k, moment)?;
+    Some((a, c))
+}
+
+/// The local exponent `n = (P/a) da/dP` of the contact law at `c`, P changing with the moment
+/// about the centre held (both ends' edge coefficients change by dP): the mean of the ends'
+/// outward speeds ([`path::edge_speeds`]) over a. 1/2 for Hertz, 1/k for the power law; 1/2 where
+/// K_N is not known (0 at an end).
+fn load_exponent(c: &NormalContact) -> f64 {
+    let speeds = path::edge_speeds(c, 1.0, c.centre());
+    let n = 0.5 * (speeds.left + speeds.right) * c.normal() / c.half_width();
+    if n.is_finite() && n > 0.0 {
+        n
+    } else {
+        0.5
+    }
 }
 
 /// The error for a segment whose shear range leaves no stick zone: `dQ >= f (P1 + P2)` means the

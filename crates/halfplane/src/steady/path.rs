@@ -17,7 +17,7 @@ use std::f64::consts::PI;
 
 /// Intervals the segment is cut into when a moment (or an asymmetric profile) makes the contact
 /// move otherwise than by the symmetric contact law: 5 contacts, the three inner ones each a
-/// Newton solve started from the line through its neighbours (two or three steps). The bounds
+/// Newton step from a cubic prediction through the end contacts (`ends_predictor`). The bounds
 /// they give are widened by the largest change between neighbours, so fewer samples are safe,
 /// only more often inconclusive (then both halves are sampled, `validity.rs`).
 const INTERVALS: usize = 4;
@@ -52,32 +52,18 @@ impl SegmentPath {
         let centred = low.is_centred() && high.is_centred();
         let mut samples = vec![(0.0, low)];
         if !centred {
-            // Each contact from the straight line through the previous two (the first from the
-            // line between the ends): Newton then needs two or three steps.
-            let (mut before, mut last) = (high, low);
+            let (d_normal, d_moment) = (to.normal() - from.normal(), to.moment() - from.moment());
+            // Hertz's contacts are closed forms (contact_from ignores the start): no cubic.
+            let cubic = !matches!(contact.profile().shape(), Shape::Hertz { .. });
+            let predict = ends_predictor(&low, &high, d_normal, d_moment, cubic);
             for k in 1..INTERVALS {
                 let t = k as f64 / INTERVALS as f64;
                 let point = from.lerp(&to, t);
-                let ahead = |f: fn(&NormalContact) -> f64| {
-                    if k == 1 {
-                        f(&last) + (f(&before) - f(&last)) / INTERVALS as f64
-                    } else {
-                        2.0 * f(&last) - f(&before)
-                    }
-                };
                 // 1e-5 of the contact's size: three orders inside the widening of the bounds (the
-                // change between neighbouring samples, of order 1e-2 of it); from the prediction
-                // (about 1e-3 off) two Newton steps.
-                let found = contact.contact_from(
-                    point.normal(),
-                    point.moment(),
-                    (
-                        ahead(NormalContact::centre),
-                        ahead(NormalContact::half_width),
-                    ),
-                    1e-5,
-                )?;
-                (before, last) = (last, found);
+                // change between neighbouring samples, of order 1e-2 of it). From the cubic
+                // prediction one Newton step.
+                let found =
+                    contact.contact_from(point.normal(), point.moment(), predict(t), 1e-5)?;
                 samples.push((t, found));
             }
         }
@@ -176,6 +162,49 @@ impl RateBounds {
             self.rate
         };
         (k + lo).abs().max((k + hi).abs())
+    }
+}
+
+/// A prediction `t -> (c, a)` of the contacts between `low` (t = 0) and `high` (t = 1) when P
+/// and M change by `d_normal` and `d_moment` along the segment: the cubic Hermite interpolant of
+/// each end through both contacts with the ends' slopes [`edge_speeds`] (error of order a
+/// fourth derivative of the end over 384), or the straight line between them when `cubic` is
+/// false or a speed is not finite (K_N = 0 at an end).
+fn ends_predictor(
+    low: &NormalContact,
+    high: &NormalContact,
+    d_normal: f64,
+    d_moment: f64,
+    cubic: bool,
+) -> impl Fn(f64) -> (f64, f64) {
+    // db/dt: the left end moves outwards towards -x.
+    let slopes = |c: &NormalContact| {
+        let s = edge_speeds(c, d_normal, d_moment);
+        [-s.left, s.right]
+    };
+    let (m0, m1) = if cubic {
+        (slopes(low), slopes(high))
+    } else {
+        ([f64::NAN; 2], [f64::NAN; 2])
+    };
+    let finite = m0.iter().chain(&m1).all(|m| m.is_finite());
+    let (y0, y1) = (
+        [low.end(Edge::Left), low.end(Edge::Right)],
+        [high.end(Edge::Left), high.end(Edge::Right)],
+    );
+    move |t: f64| {
+        let end = |i: usize| {
+            if !finite {
+                return y0[i] + t * (y1[i] - y0[i]);
+            }
+            let (t2, t3) = (t * t, t * t * t);
+            (2.0 * t3 - 3.0 * t2 + 1.0) * y0[i]
+                + (t3 - 2.0 * t2 + t) * m0[i]
+                + (3.0 * t2 - 2.0 * t3) * y1[i]
+                + (t3 - t2) * m1[i]
+        };
+        let (left, right) = (end(0), end(1));
+        (0.5 * (left + right), 0.5 * (right - left))
     }
 }
 
