@@ -1,12 +1,12 @@
 //! The marcher: the state of one march ([`Marcher`]) and its increments. `Marcher::new` sets
-//! up the grid and the kernel; `step` splits an increment where the contact edge crosses a cell
-//! centre (docs/theory.md, "Time marching": moving edges, exactly); `advance` solves one sub-step's
-//! Coulomb complementarity problem by the active set and adds up its dissipation.
+//! up the grid and the kernel; `step` splits an increment where a contact end crosses a cell
+//! centre (`crossings.rs`); `advance` solves one sub-step's Coulomb complementarity problem by
+//! the active set and adds up its dissipation.
 //!
-//! Owns the active set (which cells are out, stuck or slipping) and the state fields (pressure,
-//! traction, slip, energy). Never solves a linear system itself (the stick cells' systems are
-//! `solve.rs`'s), never builds the kernel (`kernel.rs`), never integrates the energy of a
-//! sub-step (`dissipation.rs`) and never does cycle accounting (`cycles.rs`).
+//! Owns the active set (which cells are out, stuck or slipping) and the state fields. Never
+//! solves a linear system (`solve.rs`), builds the kernel (`kernel.rs`), integrates a sub-step's
+//! energy (`dissipation.rs`), does cycle accounting (`cycles.rs`) or holds a worn gap
+//! (`worn_gap.rs`).
 
 use super::evaluate::EndSolution;
 use super::kernel;
@@ -15,21 +15,13 @@ use super::moments::PressureShape;
 use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, RelativeDisplacement, StepReport};
+use super::worn_gap::Gap;
 use crate::error::{Error, Result};
 use crate::labels::{Edge, PerEdge};
 use crate::load::LoadPoint;
 use crate::normal::Contact;
 use crate::normal_moment::NormalContact;
 use std::f64::consts::PI;
-
-/// A worn gap and its last solution on the grid.
-#[derive(Debug, Clone)]
-struct Gap {
-    gap: Vec<f64>,
-    solution: Option<super::gap::GapContact>,
-    /// The (P, M) the solution is of; `None` after the gap changed.
-    solved_for: Option<(f64, f64)>,
-}
 
 /// What a cell does in the current increment.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,7 +39,7 @@ pub(super) enum Cell {
 /// pass, and work buffers) and those `cycles.rs` reads (grid, slip, energy) are visible to the
 /// `march` module; the rest of the state is this file's alone.
 pub struct Marcher {
-    contact: Contact,
+    pub(super) contact: Contact,
     options: MarchOptions,
     pub(super) compliance: f64,
     pub(super) friction: f64,
@@ -60,11 +52,11 @@ pub struct Marcher {
     pub(super) dense: Option<Vec<f64>>,
     step: usize,
     /// The load reached by the last increment; `None` before the first (unloaded).
-    load: Option<LoadPoint>,
+    pub(super) load: Option<LoadPoint>,
     pub(super) energy: f64,
     /// The bodies' relative tangential displacement, datum the kernel's scale `l`
     /// ([`RelativeDisplacement`]).
-    displacement: f64,
+    pub(super) displacement: f64,
     pub(super) pressure: Vec<f64>,
     /// The shear traction at each cell's centre (what is reported).
     pub(super) traction: Vec<f64>,
@@ -88,12 +80,12 @@ pub struct Marcher {
     /// Pressure at the start of the current sub-step.
     pub(super) pressure_start: Vec<f64>,
     /// The contact reached; `None` unloaded.
-    state: Option<NormalContact>,
+    pub(super) state: Option<NormalContact>,
     /// The contact the current sub-step goes to.
-    target: Option<NormalContact>,
+    pub(super) target: Option<NormalContact>,
     /// A worn gap at the cell centres (`set_gap`): the contact's pressure comes from the grid
     /// (`gap.rs`) instead of the profile's normal problem.
-    gap: Option<Gap>,
+    pub(super) gap: Option<Gap>,
     /// `integral p |ds|` at each cell since the last `take_pressure_slip` (the energy
     /// quadrature's per-cell sums without f): what wear removes.
     pub(super) pressure_slip: Vec<f64>,
@@ -105,7 +97,7 @@ pub struct Marcher {
     /// The last increment as reported with its boundaries inside cells (`boundary.rs`).
     pub(super) view: Option<super::boundary::View>,
     /// The kinks as reported after the last increment.
-    reported_kinks: Vec<super::boundary::TractionKink>,
+    pub(super) reported_kinks: Vec<super::boundary::TractionKink>,
     // Work buffers, reused by every increment.
     pub(super) known: Vec<f64>,
     /// `G known` of the last pass (`dissipation.rs` reuses it).
@@ -382,131 +374,6 @@ impl Marcher {
         })
     }
 
-    /// The sub-step ends inside an increment from `start` (`None`: unloaded) to `load`, whose
-    /// contact is `target`: every fraction t in (0, 1) where a contact end passes a cell centre,
-    /// with the contact there (that end exactly at the centre), in increasing t.
-    ///
-    /// A centred contact at both ends of the increment (symmetric profile, no moment) crosses
-    /// cell centres in pairs on the mirrored grid: the fraction comes from the contact law,
-    /// `t = (P(x_c) - P_start)/(P_end - P_start)`. Otherwise each end's crossings are found on
-    /// their own by [`Marcher::crossing`].
-    fn crossings(
-        &self,
-        start: Option<LoadPoint>,
-        load: &LoadPoint,
-        target: &NormalContact,
-    ) -> Result<Vec<(f64, NormalContact)>> {
-        let from_normal = start.map_or(0.0, |p| p.normal());
-        let centred = target.is_centred() && self.state.is_none_or(|s| s.is_centred());
-        let mut crossings: Vec<(f64, NormalContact)> = Vec::new();
-        if centred {
-            let n = self.x.len();
-            let a0 = self.state.map_or(0.0, |s| s.half_width());
-            let a = target.half_width();
-            let (lo, hi) = (a0.min(a), a0.max(a));
-            for &r in &self.x[n / 2..] {
-                if r > lo && r < hi {
-                    let normal = self.contact.load(r)?;
-                    let t = (normal - from_normal) / (load.normal() - from_normal);
-                    if t > 0.0 && t < 1.0 {
-                        let k_n = self.contact.normal_intensity(r)?;
-                        let at = NormalContact::centred(normal, r, k_n);
-                        crossings.push((t, at));
-                    }
-                }
-            }
-        } else {
-            // From unloaded, the ends start where the smallest load puts them (a point at M/P
-            // for Hertz, about the flat for a flat punch).
-            let begin = match (&self.state, start) {
-                (Some(s), _) => *s,
-                (None, _) => self.contact.contact_at(&load.scaled(1e-9))?,
-            };
-            for edge in Edge::BOTH {
-                let (from, to) = (begin.end(edge), target.end(edge));
-                let (lo, hi) = (from.min(to), from.max(to));
-                let first = self.x.partition_point(|&x| x <= lo);
-                for &r in self.x[first..].iter().take_while(|&&x| x < hi) {
-                    if let Some(found) = self.crossing(start, load, &begin, target, edge, r)? {
-                        crossings.push(found);
-                    }
-                }
-            }
-        }
-        crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
-        Ok(crossings)
-    }
-
-    /// The fraction t of the increment from `start` to `load` at which the contact end `edge`
-    /// reaches `centre`, with the contact there (that end set to `centre` exactly): Newton's
-    /// method on `b(t) - centre` with the end's exact speed ([`NormalContact::edge_load_changes`]:
-    /// an end moves out by `2 dP_edge/(pi sqrt(2a) K_N)` per unit of the load change), each
-    /// contact solved from the previous one, inside a bracket that bisection keeps. `None` when
-    /// the end does not reach the centre inside (0, 1) (it moved there and back within the
-    /// increment).
-    fn crossing(
-        &self,
-        start: Option<LoadPoint>,
-        load: &LoadPoint,
-        begin: &NormalContact,
-        target: &NormalContact,
-        edge: Edge,
-        centre: f64,
-    ) -> Result<Option<(f64, NormalContact)>> {
-        let at = |t: f64| match start {
-            Some(from) => from.lerp(load, t),
-            None => load.scaled(t),
-        };
-        let (from, to) = (begin.end(edge), target.end(edge));
-        let rising = to > from;
-        // residual(t) = b(t) - centre, negative at t = 0 when the end rises through the centre.
-        let (mut lo, mut hi) = (0.0, 1.0);
-        let mut t = ((centre - from) / (to - from)).clamp(0.0, 1.0);
-        let mut near = if t < 0.5 { *begin } else { *target };
-        let scale = 1e-13 * (self.width + begin.half_width().max(target.half_width()));
-        for _ in 0..60 {
-            let point = at(t);
-            near = self
-                .contact
-                .contact_near(point.normal(), point.moment(), &near)?;
-            let residual = near.end(edge) - centre;
-            if residual.abs() <= scale || hi - lo <= 1e-15 {
-                if t <= 0.0 || t >= 1.0 {
-                    return Ok(None);
-                }
-                return Ok(Some((t, near.with_end(edge, centre))));
-            }
-            if (residual < 0.0) == rising {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            // The end's rate along the increment: the load change over it is (load - start).
-            let (d_normal, d_moment) = match start {
-                Some(p) => (load.normal() - p.normal(), load.moment() - p.moment()),
-                None => (load.normal(), load.moment()),
-            };
-            let d_edge = near.edge_load_changes(d_normal, d_moment)[edge];
-            let outward = 2.0 * d_edge
-                / (PI * (2.0 * near.half_width()).sqrt() * near.normal_intensity(edge));
-            let rate = match edge {
-                Edge::Left => -outward,
-                Edge::Right => outward,
-            };
-            let newton = t - residual / rate;
-            t = if newton > lo && newton < hi && newton.is_finite() {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-        }
-        Err(Error::NoConvergence {
-            what: "load fraction where a contact end crosses a cell centre",
-            iterations: 60,
-            last_step: hi - lo,
-        })
-    }
-
     /// One sub-step: from the current state to `load`, whose contact is `target` (cells inside
     /// both it and the current contact are in contact during the whole sub-step). Returns the
     /// energy dissipated and the active-set passes used.
@@ -671,32 +538,6 @@ impl Marcher {
         Ok((energy, passes))
     }
 
-    /// The limit traction `f p` of the current sub-step as cell means and slopes.
-    pub(super) fn limits(&mut self, target: &NormalContact) {
-        let (w, f) = (self.width, self.friction);
-        self.shape = PressureShape::new(&self.x, &self.pressure, target.ends());
-        for i in 0..self.x.len() {
-            let xi = self.x[i];
-            let [m0, m1] = if self.cells[i] == Cell::Out {
-                [0.0; 2]
-            } else {
-                self.shape.moments(i, xi, w, xi - 0.5 * w, xi + 0.5 * w)
-            };
-            self.limit_mean[i] = f * m0 / w;
-            self.limit_slope[i] = f * 12.0 * m1 / (w * w * w);
-        }
-    }
-
-    /// The pressure of the current sub-step's contact at `x`.
-    pub(super) fn pressure_at(&self, x: f64) -> Result<f64> {
-        match &self.target {
-            Some(t) if x > t.end(Edge::Left) && x < t.end(Edge::Right) => {
-                self.contact.pressure_at(t, x)
-            }
-            _ => Ok(0.0),
-        }
-    }
-
     /// The contact ends reached, `[0, 0]` unloaded.
     fn ends(&self) -> PerEdge<f64> {
         self.state.map_or(PerEdge::default(), |s| s.ends())
@@ -739,120 +580,6 @@ impl Marcher {
         }
         self.start_cells.copy_from_slice(&self.cells);
         Ok(())
-    }
-
-    /// Marches on with the gap `gap` (one value per cell, at the cell centres) in place of the
-    /// profile's: every later increment's pressure is the grid's solution of it (`gap.rs`),
-    /// which must then keep P and M constant (a worn gap's contact is solved for one load; the
-    /// moving edges of a changing load are the profile's normal problem's).
-    pub(crate) fn set_gap(&mut self, gap: Vec<f64>) {
-        let solution = self.gap.take().and_then(|g| g.solution);
-        self.gap = Some(Gap {
-            gap,
-            solution,
-            solved_for: None,
-        });
-    }
-
-    /// The contact of the worn gap under `load`: solved again when the gap or the load changed
-    /// (from the last solution's contact set), as a [`NormalContact`] whose ends are the outer
-    /// edges of the outermost touching cells.
-    fn grid_target(&mut self, load: &LoadPoint, step: usize) -> Result<NormalContact> {
-        let key = (load.normal(), load.moment());
-        let gap = self.gap.as_mut().expect("grid_target is called with a gap");
-        if let (Some(state), Some(before)) = (self.state, gap.solved_for) {
-            if before != key {
-                return Err(Error::InvalidInput {
-                    field: format!("history row {step}.normal"),
-                    value: load.normal(),
-                    valid: "the normal load and moment of the previous row: a worn gap's contact is solved for one load",
-                });
-            }
-            if gap.solution.is_some() && state.normal() == key.0 {
-                return Ok(state);
-            }
-        }
-        let mut grid = super::gap::Grid {
-            kernel: &mut self.kernel,
-            x: &self.x,
-            width: self.width,
-            compliance: self.compliance,
-        };
-        let solution = grid.solve(&gap.gap, key.0, key.1, gap.solution.as_ref())?;
-        let first = solution.pressure.iter().position(|&p| p > 0.0);
-        let last = solution.pressure.iter().rposition(|&p| p > 0.0);
-        let (Some(first), Some(last)) = (first, last) else {
-            return Err(Error::InvalidInput {
-                field: "history.normal".into(),
-                value: key.0,
-                valid: "a load the worn gap's contact carries",
-            });
-        };
-        let n = self.x.len();
-        if first == 0 || last == n - 1 {
-            return Err(Error::GridTooNarrow {
-                field: "wear.span",
-                end: self.x[if first == 0 { 0 } else { n - 1 }],
-            });
-        }
-        let ends = PerEdge {
-            left: self.x[first] - 0.5 * self.width,
-            right: self.x[last] + 0.5 * self.width,
-        };
-        gap.solution = Some(solution.clone());
-        gap.solved_for = Some(key);
-        Ok(NormalContact::on_grid(
-            key.0,
-            key.1,
-            ends,
-            solution.rotation,
-        ))
-    }
-
-    /// The bodies slide by `distance` (signed: positive in the sense positive Q drives) at the
-    /// current P and M, Q at the friction limit `sign(distance) f P`: every contact cell carries
-    /// `q = sign f p` and slips by the distance (at constant pressure the traction does not change
-    /// while they slide). The energy is `f p |distance|` at each cell (`integral p |ds|` exact).
-    pub(super) fn slide(&mut self, distance: f64) -> Result<()> {
-        let Some(load) = self.load else {
-            return Err(Error::InvalidInput {
-                field: "history.amplitude".into(),
-                value: distance,
-                valid: "a slide after the contact is loaded",
-            });
-        };
-        let (sign, f) = (distance.signum(), self.friction);
-        // What the fields report is now the sliding traction, with no stick-slip boundary.
-        self.view = None;
-        self.reported_kinks.clear();
-        let mut energy = 0.0;
-        for i in 0..self.x.len() {
-            if self.cells[i] == Cell::Out {
-                continue;
-            }
-            self.traction[i] = sign * f * self.pressure[i];
-            self.cells[i] = Cell::Slip(sign);
-            self.slip[i] += distance;
-            self.pressure_slip[i] += self.pressure[i] * distance.abs();
-            energy += f * self.pressure[i] * distance.abs();
-        }
-        self.energy += energy * self.width;
-        self.displacement += distance;
-        self.load = Some(
-            LoadPoint::new(
-                "slide",
-                load.normal(),
-                sign * f * load.normal(),
-                load.bulk(),
-            )?
-            .with_moment("slide", load.moment())?,
-        );
-        Ok(())
-    }
-
-    /// `integral p |ds|` at each cell since the last call, and zero again.
-    pub(crate) fn take_pressure_slip(&mut self) -> Vec<f64> {
-        std::mem::replace(&mut self.pressure_slip, vec![0.0; self.x.len()])
     }
 
     /// Ends the sub-step at `load` (contact `target`): the traction increments and the settled

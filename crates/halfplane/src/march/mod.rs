@@ -57,6 +57,7 @@
 // Without the `sub-cell` feature nothing calls the located boundaries (`marcher.rs`).
 #[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
 mod boundary;
+mod crossings;
 mod cycles;
 mod dissipation;
 #[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
@@ -70,6 +71,7 @@ mod solve;
 mod toeplitz;
 mod types;
 mod worn;
+mod worn_gap;
 
 pub use boundary::TractionKink;
 pub use cycles::{march, march_steady, march_steady_until, march_until};

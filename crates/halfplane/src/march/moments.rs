@@ -12,10 +12,42 @@
 //! Gauss rule, in the variable `r = sqrt(distance to the edge)` within a few cells of a contact
 //! edge, where `sqrt(u)` is not smooth in x.
 //!
-//! Owns these integrals only. Never decides which cells slip.
+//! Owns these integrals, and the marcher's limit means and slopes built from them. Never
+//! decides which cells slip.
 
-use crate::labels::PerEdge;
+use super::marcher::{Cell, Marcher};
+use crate::error::Result;
+use crate::labels::{Edge, PerEdge};
+use crate::normal_moment::NormalContact;
 use crate::quadrature::gauss_legendre;
+
+impl Marcher {
+    /// The limit traction `f p` of the current sub-step as cell means and slopes.
+    pub(super) fn limits(&mut self, target: &NormalContact) {
+        let (w, f) = (self.width, self.friction);
+        self.shape = PressureShape::new(&self.x, &self.pressure, target.ends());
+        for i in 0..self.x.len() {
+            let xi = self.x[i];
+            let [m0, m1] = if self.cells[i] == Cell::Out {
+                [0.0; 2]
+            } else {
+                self.shape.moments(i, xi, w, xi - 0.5 * w, xi + 0.5 * w)
+            };
+            self.limit_mean[i] = f * m0 / w;
+            self.limit_slope[i] = f * 12.0 * m1 / (w * w * w);
+        }
+    }
+
+    /// The pressure of the current sub-step's contact at `x`.
+    pub(super) fn pressure_at(&self, x: f64) -> Result<f64> {
+        match &self.target {
+            Some(t) if x > t.end(Edge::Left) && x < t.end(Edge::Right) => {
+                self.contact.pressure_at(t, x)
+            }
+            _ => Ok(0.0),
+        }
+    }
+}
 
 /// The pressure over the cells in the form `sqrt(u) psi`, `psi` linear in each cell.
 pub(super) struct PressureShape {
