@@ -8,10 +8,11 @@ use crate::analyses::{csv_keys, SIGNAL_CHECK_INTERVAL};
 use crate::case::{to_toml, PyCase};
 use crate::convert;
 use crate::errors;
-use halfplane::fatigue::{CycleTractions, FatigueResult};
+use halfplane::fatigue::CycleTractions;
 use halfplane::march::Worn;
-use halfplane::wear::{self, Checkpoint, CheckpointFields, CycleWear, LoopPoint, WornCycle};
+use halfplane::wear::{self, CheckpointFields, CycleWear, LoopPoint, WornCycle};
 use halfplane::Error;
+use halfplane_case::case::Reached;
 use halfplane_case::report::wear::{WearReport, WearRow};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyBaseException;
@@ -71,6 +72,10 @@ const FIELDS: [(&str, Field); 6] = [
     ("slip_range", |f| &f.slip_range),
 ];
 
+/// `wear_report`'s result: the report, the parameters `--fatigue` leaves out, and the error of a
+/// run that stopped part way (raised by the Python side, with the report attached).
+type WearOutcome<'py> = (Bound<'py, PyDict>, Vec<String>, Option<Py<PyBaseException>>);
+
 /// The fretting loop of a checkpoint, as its `--fields` CSV names the columns.
 type LoopValue = fn(&LoopPoint) -> f64;
 const LOOP: [(&str, LoopValue); 2] = [
@@ -95,7 +100,7 @@ pub fn wear_report<'py>(
     cells: Option<usize>,
     overrides: Option<&Bound<'py, PyDict>>,
     fatigue: bool,
-) -> PyResult<(Bound<'py, PyDict>, Vec<String>, Option<Py<PyBaseException>>)> {
+) -> PyResult<WearOutcome<'py>> {
     let case = &case.case;
     let input = |e: anyhow::Error| errors::from_anyhow(py, &e, None);
     let evaluator = fatigue
@@ -116,46 +121,34 @@ pub fn wear_report<'py>(
         worn.record_tractions();
     }
     let (approach, datum) = (worn.elastic_approach(), worn.loop_datum());
-    let unworn = worn.unworn_contact();
-    let mut reached: Vec<Checkpoint> = Vec::new();
-    let mut parameters: Vec<FatigueResult> = Vec::new();
-    let mut fatigue_error = None;
+    let skipped = evaluator
+        .as_ref()
+        .map_or_else(Vec::new, |f| f.skipped.clone());
+    let mut reached = Reached::new(evaluator, worn.unworn_contact());
     let mut watched = Watched {
         worn: &mut worn,
         last_check: Instant::now(),
         interrupt: None,
     };
-    let outcome = py.detach(|| {
-        wear::run(&mut watched, options, |c| {
-            if let (Some(f), None) = (&evaluator, &fatigue_error) {
-                match f.evaluate(c, unworn) {
-                    Some(Ok(r)) => parameters.push(r),
-                    Some(Err(e)) => fatigue_error = Some(e),
-                    None => {}
-                }
-            }
-            let mut c = c.clone();
-            c.tractions = None;
-            reached.push(c);
-        })
-    });
+    let outcome = py.detach(|| wear::run(&mut watched, options, |c| reached.observe(c)));
     if let Some(interrupt) = watched.interrupt {
         return Err(interrupt);
     }
-    if let Some(e) = fatigue_error {
+    if let Some(e) = reached.error.take() {
         return Err(input(e));
     }
+    let checkpoints = &reached.checkpoints;
     let (simulated, stopped) = match &outcome {
         Ok(r) => (Some(r.simulated_cycles), None),
         Err(e) => (None, Some(e.to_string())),
     };
     let error = match outcome {
         Ok(_) => None,
-        Err(e) if reached.is_empty() => return Err(errors::from_library(py, &e)),
+        Err(e) if checkpoints.is_empty() => return Err(errors::from_library(py, &e)),
         Err(e) => Some(errors::from_library(py, &e).into_value(py)),
     };
     let mut report = WearReport::new(
-        &reached,
+        checkpoints,
         simulated,
         approach,
         datum,
@@ -163,8 +156,8 @@ pub fn wear_report<'py>(
         &case.units,
         stopped,
     );
-    if evaluator.is_some() {
-        report = report.with_fatigue(&parameters);
+    if reached.with_fatigue() {
+        report = report.with_fatigue(&reached.parameters);
     }
     let (summary, rows) = convert::to_node(&report)?.take("checkpoints");
     let out = summary.into_py(py)?.cast_into::<PyDict>()?;
@@ -176,27 +169,26 @@ pub fn wear_report<'py>(
     }
     out.set_item("checkpoints", columns)?;
     let x = worn.x().to_vec();
-    let shape = [reached.len(), x.len()];
+    let shape = [checkpoints.len(), x.len()];
     out.set_item("x", PyArray1::from_vec(py, x))?;
     for (name, field) in FIELDS {
-        let values: Vec<f64> = reached
+        let values: Vec<f64> = checkpoints
             .iter()
             .flat_map(|c| field(&c.fields).iter().copied())
             .collect();
         out.set_item(name, PyArray1::from_vec(py, values).reshape(shape)?)?;
     }
     // Every checkpoint's cycle has the same increments, so its loop as many points.
-    let points = reached.first().map_or(0, |c| c.fretting_loop.len());
+    let points = checkpoints.first().map_or(0, |c| c.fretting_loop.len());
     for (name, value) in LOOP {
-        let values: Vec<f64> = reached
+        let values: Vec<f64> = checkpoints
             .iter()
             .flat_map(|c| c.fretting_loop.iter().map(value))
             .collect();
         out.set_item(
             name,
-            PyArray1::from_vec(py, values).reshape([reached.len(), points])?,
+            PyArray1::from_vec(py, values).reshape([checkpoints.len(), points])?,
         )?;
     }
-    let skipped = evaluator.map_or_else(Vec::new, |f| f.skipped);
     Ok((out, skipped, error))
 }

@@ -18,7 +18,7 @@ mod wear;
 use count::{count_in, RawCount};
 pub use csv::{read_csv, read_csv_with, Table};
 pub use fatigue::FatigueSettings;
-pub use wear::{WearFatigue, WearSettings, DEFAULT_SPAN};
+pub use wear::{Reached, WearFatigue, WearSettings, DEFAULT_SPAN};
 
 /// The range of `solver.cells` and `--cells`: the library's (its maximum is set by memory).
 const MIN_CELLS: usize = MarchOptions::MIN_CELLS;

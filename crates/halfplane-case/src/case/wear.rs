@@ -73,6 +73,52 @@ impl WearFatigue {
     }
 }
 
+/// What a wear run keeps of each checkpoint as the loop reaches it (the CLI and Python observe
+/// the same way): the checkpoint without its cycle's tractions and, with `--fatigue`, the
+/// parameters of that cycle; the first evaluation that fails stops the others and is kept.
+pub struct Reached {
+    fatigue: Option<WearFatigue>,
+    unworn: [f64; 2],
+    /// The checkpoints reached, in order.
+    pub checkpoints: Vec<Checkpoint>,
+    /// `--fatigue`: the parameters of each checkpoint's cycle, in order.
+    pub parameters: Vec<FatigueResult>,
+    /// The first `--fatigue` evaluation that failed.
+    pub error: Option<anyhow::Error>,
+}
+
+impl Reached {
+    /// For a run whose unworn contact is `[b1, b2]` (the fatigue grid is scaled on it).
+    pub fn new(fatigue: Option<WearFatigue>, unworn: [f64; 2]) -> Self {
+        Self {
+            fatigue,
+            unworn,
+            checkpoints: Vec::new(),
+            parameters: Vec::new(),
+            error: None,
+        }
+    }
+
+    /// Keeps `checkpoint` (evaluating its cycle with `--fatigue`).
+    pub fn observe(&mut self, checkpoint: &Checkpoint) {
+        if let (Some(f), None) = (&self.fatigue, &self.error) {
+            match f.evaluate(checkpoint, self.unworn) {
+                Some(Ok(r)) => self.parameters.push(r),
+                Some(Err(e)) => self.error = Some(e),
+                None => {}
+            }
+        }
+        let mut kept = checkpoint.clone();
+        kept.tractions = None;
+        self.checkpoints.push(kept);
+    }
+
+    /// Whether the parameters are evaluated (`--fatigue`).
+    pub fn with_fatigue(&self) -> bool {
+        self.fatigue.is_some()
+    }
+}
+
 /// Resolves `[wear]` (required by `halfplane wear`).
 pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
     let table = table.ok_or_else(|| {

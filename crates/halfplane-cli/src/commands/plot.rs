@@ -585,7 +585,7 @@ fn figure(config: &PlotConfig) -> Result<halfplane_plot::Figure> {
             cells,
             quantity,
         } => {
-            let mut worn = case.worn_march(&settings, *cells)?;
+            let mut worn = case.worn_march(settings, *cells)?;
             let result = halfplane::wear::run(&mut worn, &settings.options, |_| {})?;
             let quantity = checkpoint_quantity(&result.checkpoints, quantity, &case.units)?;
             halfplane_plot::wear_figure(&result, &quantity, worn.loop_datum(), units)?

@@ -6,10 +6,9 @@ use crate::progress::Progress;
 use crate::report::wear::{fields_csv, loop_csv, WearReport};
 use crate::units::Units;
 use anyhow::{anyhow, Result};
-use halfplane::fatigue::FatigueResult;
 use halfplane::march::Worn;
-use halfplane::wear::{self, Checkpoint, WearOptions, WornCycle};
-use halfplane_case::case::WearFatigue;
+use halfplane::wear::{self, WearOptions, WornCycle};
+use halfplane_case::case::{Reached, WearFatigue};
 use std::path::PathBuf;
 
 /// What `wear` runs on.
@@ -71,9 +70,7 @@ pub fn run(config: WearConfig) -> Result<()> {
             eprintln!("warning: {line}");
         }
     }
-    let unworn = worn.unworn_contact();
-    let mut parameters: Vec<FatigueResult> = Vec::new();
-    let mut fatigue_error = None;
+    let mut reached = Reached::new(fatigue, worn.unworn_contact());
     if let Some(dir) = &fields {
         std::fs::create_dir_all(dir).map_err(|e| {
             anyhow!(
@@ -83,7 +80,6 @@ pub fn run(config: WearConfig) -> Result<()> {
         })?;
     }
     let bar = Progress::new("wear", "checkpoints", options.checkpoints().len() as u64);
-    let mut reached: Vec<Checkpoint> = Vec::new();
     let mut write_error = None;
     let (approach, datum) = (worn.elastic_approach(), worn.loop_datum());
     let outcome = wear::run(&mut worn, &options, |c| {
@@ -96,41 +92,39 @@ pub fn run(config: WearConfig) -> Result<()> {
                 }
             }
         }
-        if let (Some(f), None) = (&fatigue, &fatigue_error) {
-            match f.evaluate(c, unworn) {
-                Some(Ok(r)) => parameters.push(r),
-                Some(Err(e)) => fatigue_error = Some(e),
-                None => {}
-            }
-        }
-        let mut c = c.clone();
-        c.tractions = None;
-        reached.push(c);
+        reached.observe(c);
     });
     bar.finish();
     if let Some(e) = write_error {
         return Err(e);
     }
-    if let Some(e) = fatigue_error {
+    if let Some(e) = reached.error.take() {
         return Err(e);
     }
     let (simulated, stopped) = match &outcome {
         Ok(r) => (Some(r.simulated_cycles), None),
         Err(e) => (None, Some(e.to_string())),
     };
+    let checkpoints = &reached.checkpoints;
     let mut report = WearReport::new(
-        &reached, simulated, approach, datum, &options, &units, stopped,
+        checkpoints,
+        simulated,
+        approach,
+        datum,
+        &options,
+        &units,
+        stopped,
     );
-    if fatigue.is_some() {
-        report = report.with_fatigue(&parameters);
+    if reached.with_fatigue() {
+        report = report.with_fatigue(&reached.parameters);
     }
-    if outcome.is_err() && !reached.is_empty() {
+    if outcome.is_err() && !checkpoints.is_empty() {
         note(&format!(
             "wear stopped after {} checkpoint(s); the report below holds them",
-            reached.len()
+            checkpoints.len()
         ));
     }
-    if outcome.is_ok() || !reached.is_empty() {
+    if outcome.is_ok() || !checkpoints.is_empty() {
         emit(&match format {
             Format::Table => report.table(),
             Format::Csv => report.csv(),
