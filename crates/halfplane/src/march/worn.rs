@@ -158,6 +158,9 @@ impl Worn {
         options: &MarchOptions,
         span: f64,
     ) -> Result<Self> {
+        if !cfg!(feature = "wear") {
+            return Err(Self::not_built());
+        }
         if !(span.is_finite() && (1.0..=100.0).contains(&span)) {
             return Err(Error::InvalidInput {
                 field: "wear.span".into(),
@@ -214,6 +217,15 @@ impl Worn {
             recorded: None,
             datum: Self::DEFAULT_DATUM * unworn.half_width(),
         })
+    }
+
+    /// The error of a build without the library's `wear` feature.
+    pub(super) fn not_built() -> Error {
+        Error::InvalidInput {
+            field: "wear".into(),
+            value: 1.0,
+            valid: "no wear in this build: the library's `wear` feature (on by default, off in the web page) is left out",
+        }
     }
 
     /// The default datum of the fretting loop, in half-widths of the unworn contact: far enough
