@@ -43,7 +43,7 @@ fn loop_error(run: &MarchResult, steps_per_half: usize, datum: f64) -> f64 {
                 compliance, a, f, P, Q, q, rising, datum,
             )
         };
-        let marched = step.relative_displacement.at(datum);
+        let marched = step.relative_displacement.at(datum).unwrap();
         worst = worst.max((marched - exact).abs() / scale);
     }
     worst
@@ -94,7 +94,7 @@ fn the_loop_area_is_the_energy_dissipated() {
         let area: f64 = cycle
             .windows(2)
             .map(|w| {
-                let [d0, d1] = [0, 1].map(|k| w[k].relative_displacement.at(datum));
+                let [d0, d1] = [0, 1].map(|k| w[k].relative_displacement.at(datum).unwrap());
                 0.5 * (w[0].load.shear() + w[1].load.shear()) * (d1 - d0)
             })
             .sum();
@@ -109,4 +109,14 @@ fn the_loop_area_is_the_energy_dissipated() {
         errors[1] < errors[0] / 6.0,
         "the loop's area does not converge to the energy at second order: {errors:?}"
     );
+}
+
+#[test]
+fn a_datum_must_be_a_positive_length() {
+    let run = fretting(5, 100);
+    let d = run.steps.last().unwrap().relative_displacement;
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = d.at(bad).unwrap_err().to_string();
+        assert!(e.contains("relative displacement datum"), "{bad}: {e}");
+    }
 }

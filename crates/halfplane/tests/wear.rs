@@ -203,7 +203,8 @@ fn the_sliding_loop_is_mindlins_with_the_slides_and_its_area_the_energy() {
     let top = cp.fretting_loop[0].shear;
     // Where each branch starts: (Q, delta) at the turning point.
     let mut turn = (top, first(top));
-    let mut worst: f64 = 0.0;
+    // The cycle starts at the end of the first rise: Cattaneo-Mindlin's first loading.
+    let mut worst = (cp.fretting_loop[0].relative_displacement - turn.1).abs();
     for w in cp.fretting_loop.windows(2) {
         let (before, now) = (w[0], w[1]);
         let expected = if (now.shear.abs() - f * P).abs() < 1e-9 * P {
@@ -219,12 +220,12 @@ fn the_sliding_loop_is_mindlins_with_the_slides_and_its_area_the_energy() {
         };
         worst = worst.max((now.relative_displacement - expected).abs());
     }
-    // Measured 1.0e-4 of delta_0(f P) at 400 cells (6.6e-4 at 200, 3.3e-5 at 800): the
-    // stick zone at the onset of sliding (Q = f P (1 - 1e-6)) is narrower than a cell, so one
-    // cell sticks and the shift there is a cell-level answer; the slides carry it round the
-    // loop. Twice the measured error.
+    // Measured at 400 cells: 2.2e-4 of delta_0(f P) at the cycle's start, the end of the first
+    // rise (Q = f P (1 - 1e-6), whose stick zone is narrower than a cell: a cell-level answer),
+    // 1.0e-4 on the branches (3.3e-5 at 800 cells), which the slides carry round the loop.
+    // Tolerance: 1.5 times the start's error.
     assert!(
-        worst < 2e-4 * first(f * P),
+        worst < 3.3e-4 * first(f * P),
         "the sliding loop is {worst:e} off Mindlin's (delta_0(fP) = {:e})",
         first(f * P)
     );
@@ -243,7 +244,8 @@ fn the_sliding_loop_is_mindlins_with_the_slides_and_its_area_the_energy() {
         "the sliding loop's area {area} is not the energy dissipated {}",
         cp.energy_per_cycle
     );
-    // The displacement amplitude is half the loop's range: 2 delta_0(f P) plus the amplitude.
+    // The displacement amplitude is half the loop's range: 2 delta_0(f P) plus the amplitude
+    // (1.7e-5 measured; the loop points' 2e-4).
     let expected = first(f * P) + 0.5 * amplitude;
     assert!(
         (cp.displacement_amplitude - expected).abs() < 2e-4 * expected,
@@ -254,12 +256,12 @@ fn the_sliding_loop_is_mindlins_with_the_slides_and_its_area_the_energy() {
 
 #[test]
 fn a_coarse_grid_reaches_the_sliding_onset() {
-    // 200 cells over six times the unworn contact: 33 across it. At Q = f P (1 - 1e-6) the
-    // stick zone (a sqrt(1e-6)) is far narrower than a cell and no cell can stay under its
-    // limit; the active set used to cycle between all-slip and full stick until it gave up
-    // (ActiveSet error). The nearest cell now sticks alone: the cycle runs and dissipates what a
-    // finer grid does, within 0.5% (measured 0.24% below 800 cells' 26.087 N mm/mm: the energy
-    // is the slides' 2 f P amplitude, exact on any grid, plus the reversals' micro-slip).
+    // 200 cells over six times the unworn contact: 33 across it. There the pressure sampled at
+    // the cell centres sums to 0.45% less than P, so Q = f P (1 - 1e-6) exceeds what the cells
+    // carry at the friction limit, and the active set used to cycle between all-slip and full
+    // stick until it gave up (ActiveSet error). The first rise now stops short of the cells'
+    // own limit (the worn gap's pressure carries P exactly), and a stick zone narrower than a
+    // cell sticks its nearest cell: the cycle runs and dissipates what a finer grid does.
     let contact = reference::hertz();
     let load = LoadPoint::new("load", P, 0.0, 0.0).unwrap();
     let energy = |cells: usize| {

@@ -433,10 +433,10 @@ impl Marcher {
             }
             if !self.cells.contains(&Cell::Stick) {
                 // All contact cells were flagged to slip while |Q| < fP: restart from full stick.
-                // Flagged again, the stick zone is narrower than a cell (Q within a cell's share
-                // of f P, as at the onset of sliding): the cell that exceeded its limit least
-                // sticks alone for the rest of the sub-step, carrying what the slipping cells
-                // leave of Q (a cell-level error, like a stick zone's edge on the grid).
+                // Flagged again, the stick zone is narrower than a cell (as at the onset of
+                // sliding): the cell that exceeded its limit least sticks alone for the rest of
+                // the sub-step and carries what the slipping cells leave of Q, which must be
+                // within its own limit (checked below).
                 restarts += 1;
                 if restarts == 1 {
                     for c in self.cells.iter_mut().filter(|c| matches!(c, Cell::Slip(_))) {
@@ -447,10 +447,14 @@ impl Marcher {
                     let nearest = (0..n)
                         .filter(|&i| self.pressure[i] > 0.0)
                         .min_by(|&i, &j| excess(i).total_cmp(&excess(j)));
-                    if let Some(i) = nearest {
-                        self.cells[i] = Cell::Stick;
-                        forced = Some(i);
-                    }
+                    let Some(i) = nearest else {
+                        return Err(Error::ActiveSet {
+                            step,
+                            iterations: passes,
+                        });
+                    };
+                    self.cells[i] = Cell::Stick;
+                    forced = Some(i);
                 }
             }
             // Known traction increments: slip cells at the friction limit, released cells to zero.
@@ -523,6 +527,17 @@ impl Marcher {
             }
             if !changed {
                 break;
+            }
+        }
+        if let Some(i) = forced {
+            // Q beyond what the cells' pressure carries at the limit, `f sum(p) w`: the sampled
+            // pressure of a coarse grid sums to less than P, so Q just below f P can exceed it.
+            if (self.traction[i] + self.dq[i]).abs() > f * self.pressure[i] + traction_tolerance {
+                return Err(Error::InvalidInput {
+                    field: format!("history row {step}.shear"),
+                    value: load.shear().abs(),
+                    valid: "a shear load the grid's cells carry at the friction limit (f times their pressure, which falls short of f P on a coarse grid): use more cells (solver.cells)",
+                });
             }
         }
         // Slip is `s = du - c_disp c` with du the surfaces' relative displacement (datum l):

@@ -243,9 +243,10 @@ pub struct StepReport {
 /// the surfaces' elastic relative displacement (the log kernel the march solves with: the
 /// tangential counterpart of Johnson, *Contact Mechanics*, eq. 2.25a, summed over both bodies;
 /// the bulk stress's strain measured from x = 0). Half-plane displacements need a datum, the
-/// length `d` at which a point load's logarithm vanishes: for `d` well beyond the contact, the
-/// bodies' surface points at distance `d` from it, where the contact's traction acts as a point
-/// load. [`RelativeDisplacement::at`] takes it. Changing it adds `(A/pi) Q ln(d2/d1)`, a shear
+/// length `d` at which a point load's logarithm vanishes: for `d` well beyond the contact and no
+/// bulk stress, the bodies' surface points at distance `d` from it, where the contact's traction
+/// acts as a point load (with bulk stress those points also move by `∓(A/4) sigma d`, which
+/// delta leaves out). [`RelativeDisplacement::at`] takes it. Changing it adds `(A/pi) Q ln(d2/d1)`, a shear
 /// of the loop: a loop's area (the energy dissipated) and its width at Q = 0 do not depend on
 /// it. Zero unloaded and under normal load alone.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -274,8 +275,12 @@ impl RelativeDisplacement {
     }
 
     /// delta with the datum `datum` (a length > 0).
-    pub fn at(&self, datum: f64) -> f64 {
-        self.at_scale + self.log_coefficient * (datum / self.scale).ln()
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the datum when it is not a positive length.
+    pub fn at(&self, datum: f64) -> Result<f64> {
+        crate::error::physical_positive("relative displacement datum", datum)?;
+        Ok(self.at_scale + self.log_coefficient * (datum / self.scale).ln())
     }
 }
 

@@ -89,6 +89,7 @@ impl Worn {
             cycle.into_iter().map(Increment::Load).collect(),
             options,
             span,
+            false,
         )
     }
 
@@ -148,7 +149,7 @@ impl Worn {
         }
         // One cycle: slide +, fall, slide -, rise (the last slide + starts the next cycle).
         cycle.pop();
-        Self::build(contact, &ramp, cycle, options, span)
+        Self::build(contact, &ramp, cycle, options, span, true)
     }
 
     fn build(
@@ -157,6 +158,7 @@ impl Worn {
         cycle: Vec<Increment>,
         options: &MarchOptions,
         span: f64,
+        sliding: bool,
     ) -> Result<Self> {
         if !cfg!(feature = "wear") {
             return Err(Self::not_built());
@@ -195,8 +197,24 @@ impl Worn {
         let (c, half) = (unworn.centre(), span * 1.01 * unworn.half_width());
         let mut marcher = Marcher::spanning(contact, [c - half, c + half], options)?;
         let mut last = ([0.0; 2], 0.0);
+        let f = contact.friction().value();
         for load in ramp {
-            let r = marcher.step(*load)?;
+            // The first rise to sliding on the profile's pressure sampled at the cell centres,
+            // whose sum falls short of P on a coarse grid: it stops short of that sum's limit
+            // f sum(p) w as it stops short of f P (the worn gap's pressure carries P exactly).
+            let carried = f * marcher.width * marcher.pressure.iter().sum::<f64>();
+            let cap = carried * (1.0 - SLIDE_MARGIN);
+            let load = match sliding && load.shear().abs() > cap && carried > 0.0 {
+                true => LoadPoint::new(
+                    "history",
+                    load.normal(),
+                    cap * load.shear().signum(),
+                    load.bulk(),
+                )?
+                .with_moment("history", load.moment())?,
+                false => *load,
+            };
+            let r = marcher.step(load)?;
             last = ([r.ends[Edge::Left], r.ends[Edge::Right]], load.bulk());
         }
         let base = gap_at(contact, &marcher.x)?;
@@ -333,7 +351,7 @@ impl WornCycle for Worn {
             r.increments.clear();
         }
         let mut fretting_loop = Vec::with_capacity(self.cycle.len() + 1);
-        fretting_loop.push(self.loop_point());
+        fretting_loop.push(self.loop_point()?);
         for increment in self.cycle.clone() {
             match increment {
                 Increment::Load(load) => {
@@ -343,7 +361,7 @@ impl WornCycle for Worn {
                 }
                 Increment::Slide(distance) => self.marcher.slide(distance)?,
             }
-            fretting_loop.push(self.loop_point());
+            fretting_loop.push(self.loop_point()?);
             for i in 0..n {
                 low[i] = low[i].min(self.marcher.slip[i]);
                 high[i] = high[i].max(self.marcher.slip[i]);
@@ -396,12 +414,12 @@ impl WornCycle for Worn {
 
 impl Worn {
     /// Q and the relative displacement now.
-    fn loop_point(&self) -> LoopPoint {
+    fn loop_point(&self) -> Result<LoopPoint> {
         let d = self.marcher.relative_displacement();
-        LoopPoint {
+        Ok(LoopPoint {
             shear: d.shear(),
-            relative_displacement: d.at(self.datum),
-        }
+            relative_displacement: d.at(self.datum)?,
+        })
     }
 }
 
