@@ -128,7 +128,7 @@ pub fn cattaneo_mindlin_displacement(
 /// delta_0((Q + Q*)/2)`, on the falling one `delta(Q) = delta_0(Q*) - 2 delta_0((Q* - Q)/2)`,
 /// with `delta_0` = [`cattaneo_mindlin_displacement`] and `Q*` the amplitude (Mindlin and
 /// Deresiewicz, *J. Appl. Mech.* 20, 1953, by the superposition of Ciavarella, *Int. J. Solids
-/// Struct.* 35, 1998, and Jäger, which holds in plane strain for similar materials).
+/// Struct.* 35, 1998, which holds in plane strain for similar materials).
 #[allow(clippy::too_many_arguments)]
 pub fn cattaneo_mindlin_loop_displacement(
     compliance: f64,
