@@ -56,6 +56,16 @@ pub fn schema(layout: &Layout) -> Schema {
     Schema::new(fields)
 }
 
+/// One number per row, null where `value` gives none or a value that is not finite (the CSV's
+/// empty cell).
+fn finite_column(rows: &[ParquetRow], value: impl Fn(&Outcome) -> Option<f64>) -> ArrayRef {
+    let mut b = Float64Builder::with_capacity(rows.len());
+    for r in rows {
+        b.append_option(value(&r.outcome).filter(|v| v.is_finite()));
+    }
+    Arc::new(b.finish())
+}
+
 impl ParquetSink {
     /// Creates the output (Snappy-compressed).
     pub fn create(path: &Path, layout: &Layout) -> Result<Self> {
@@ -92,16 +102,7 @@ impl ParquetSink {
         }
         columns.push(Arc::new(regime.finish()));
         for k in 0..8 {
-            let mut b = Float64Builder::with_capacity(n);
-            for r in rows {
-                b.append_option(
-                    r.outcome
-                        .steady
-                        .map(|s| s.numbers()[k])
-                        .filter(|v| v.is_finite()),
-                );
-            }
-            columns.push(Arc::new(b.finish()));
+            columns.push(finite_column(rows, |o| o.steady.map(|s| s.numbers()[k])));
         }
         let mut error = StringBuilder::new();
         for r in rows {
@@ -155,16 +156,7 @@ impl ParquetSink {
         if self.layout.analysis == Analysis::Wear {
             // Every wear column but the last, the cycles marched.
             for k in 0..super::WEAR_COLUMNS.len() - 1 {
-                let mut b = Float64Builder::with_capacity(n);
-                for r in rows {
-                    b.append_option(
-                        r.outcome
-                            .wear
-                            .and_then(|w| w.numbers()[k])
-                            .filter(|v| v.is_finite()),
-                    );
-                }
-                columns.push(Arc::new(b.finish()));
+                columns.push(finite_column(rows, |o| o.wear.and_then(|w| w.numbers()[k])));
             }
             let mut simulated = UInt64Builder::with_capacity(n);
             for r in rows {
