@@ -10,10 +10,10 @@ use crate::convert;
 use crate::errors;
 use halfplane::fatigue::CycleTractions;
 use halfplane::march::Worn;
-use halfplane::wear::{self, CheckpointFields, CycleWear, LoopPoint, WornCycle};
+use halfplane::wear::{self, CheckpointFields, CycleWear, WornCycle};
 use halfplane::Error;
 use halfplane_case::case::Reached;
-use halfplane_case::report::wear::{WearReport, WearRow};
+use halfplane_case::report::wear::{WearReport, WearRow, LOOP_COLUMNS};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyBaseException;
 use pyo3::prelude::*;
@@ -75,13 +75,6 @@ const FIELDS: [(&str, Field); 6] = [
 /// `wear_report`'s result: the report, the parameters `--fatigue` leaves out, and the error of a
 /// run that stopped part way (raised by the Python side, with the report attached).
 type WearOutcome<'py> = (Bound<'py, PyDict>, Vec<String>, Option<Py<PyBaseException>>);
-
-/// The fretting loop of a checkpoint, as its `--fields` CSV names the columns.
-type LoopValue = fn(&LoopPoint) -> f64;
-const LOOP: [(&str, LoopValue); 2] = [
-    ("loop_shear", |p| p.shear),
-    ("loop_relative_displacement", |p| p.relative_displacement),
-];
 
 /// `halfplane wear CASE --cells CELLS --json` with the `[wear]` fields in `overrides` (a dict of
 /// the section's fields, e.g. `{"cycles": 1000}`) put in: the report as a dict whose
@@ -180,13 +173,13 @@ pub fn wear_report<'py>(
     }
     // Every checkpoint's cycle has the same increments, so its loop as many points.
     let points = checkpoints.first().map_or(0, |c| c.fretting_loop.len());
-    for (name, value) in LOOP {
+    for (name, value) in LOOP_COLUMNS {
         let values: Vec<f64> = checkpoints
             .iter()
             .flat_map(|c| c.fretting_loop.iter().map(value))
             .collect();
         out.set_item(
-            name,
+            format!("loop_{name}"),
             PyArray1::from_vec(py, values).reshape([checkpoints.len(), points])?,
         )?;
     }

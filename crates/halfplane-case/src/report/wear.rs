@@ -5,7 +5,7 @@
 use super::{Cell, Column, Style};
 use crate::units::{Quantity, Units};
 use halfplane::fatigue::{FatigueResult, Parameter};
-use halfplane::wear::{Checkpoint, WearOptions};
+use halfplane::wear::{Checkpoint, LoopPoint, WearOptions};
 use serde::{Serialize, Serializer};
 use std::fmt::Write;
 
@@ -385,12 +385,25 @@ impl WearReport {
     }
 }
 
-/// The fretting loop of a checkpoint's cycle as CSV: `shear` (Q) and `relative_displacement`,
-/// at the cycle's start and after every increment and slide.
+/// A loop point's value in one column.
+pub type LoopValue = fn(&LoopPoint) -> f64;
+
+/// The fretting loop's columns (`--fields`' `loop_<cycle>.csv`), each with its value at a point:
+/// `shear` (Q) and `relative_displacement`.
+pub const LOOP_COLUMNS: [(&str, LoopValue); 2] = [
+    ("shear", |p| p.shear),
+    ("relative_displacement", |p| p.relative_displacement),
+];
+
+/// The fretting loop of a checkpoint's cycle as CSV ([`LOOP_COLUMNS`]), at the cycle's start and
+/// after every increment and slide.
 pub fn loop_csv(c: &Checkpoint) -> String {
-    let mut o = String::from("shear,relative_displacement\n");
+    let names: Vec<&str> = LOOP_COLUMNS.iter().map(|(name, _)| *name).collect();
+    let mut o = names.join(",") + "\n";
     for p in &c.fretting_loop {
-        let _ = writeln!(o, "{},{}", p.shear, p.relative_displacement);
+        let values: Vec<String> = LOOP_COLUMNS.iter().map(|(_, v)| v(p).to_string()).collect();
+        o += &values.join(",");
+        o.push('\n');
     }
     o
 }
