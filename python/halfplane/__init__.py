@@ -113,8 +113,9 @@ def march(
 
     ``cells`` overrides the case's ``[solver] cells`` (8 to 1,000,000; default 400) across the
     largest contact of the history. Returns a :class:`MarchResult` with ``steps`` (the
-    ``march --csv`` columns), ``cycles`` (energy and largest slip amplitude per cycle),
-    ``shakedown_cycle``, ``cycles_run``, ``steady_change`` and ``steady_converged``.
+    ``march --csv`` columns, ``relative_displacement`` among them: the fretting loop against
+    ``shear``, at the datum ``loop_datum``), ``cycles`` (energy and largest slip amplitude per
+    cycle), ``shakedown_cycle``, ``cycles_run``, ``steady_change`` and ``steady_converged``.
 
     With ``cycles = "steady"`` in the case's ``[history]`` the last cycle is repeated until no
     cell's slip range changes by more than ``steady_tolerance`` (default 1e-10) x A f P_max
@@ -152,6 +153,7 @@ def march(
         cycles_run=out["cycles_run"],
         steady_change=out["steady_change"],
         steady_converged=out["steady_converged"],
+        loop_datum=out["loop_datum"],
     )
 
 

@@ -331,8 +331,9 @@ class MarchResult:
 
     - ``steps``: one row per increment with the ``march --csv`` columns: ``step, normal, shear,
       bulk, half_width, stick_left, stick_right, stick_intervals, energy_increment, energy,
-      passes`` (stick columns: the largest stick interval, NaN when none; ``stick_intervals``
-      every interval as ``"left:right"`` separated by spaces, NaN when none);
+      passes, moment, contact_left, contact_right, relative_displacement`` (stick columns: the
+      largest stick interval, NaN when none; ``stick_intervals`` every interval as
+      ``"left:right"`` separated by spaces, NaN when none);
     - ``cycles``: one row per load cycle (cyclic histories): ``index, energy,
       max_slip_amplitude`` (energy per unit thickness, N mm/mm by default; amplitude is half the
       peak-to-peak slip, in the length unit);
@@ -344,6 +345,9 @@ class MarchResult:
     - ``steady_converged``: whether that change is within ``history.steady_tolerance``
       (default 1e-10), or None with fewer than two cycles;
     - ``x``: cell centres (length unit), shape (cells,);
+    - ``loop_datum``: the datum of the steps' ``relative_displacement`` (the bodies' relative
+      tangential displacement, the fretting loop against ``shear``): ten times the largest
+      contact half-width reached (None for a result built without it);
     - with ``fields=True``: ``pressure`` p (>= 0), ``traction`` q (positive in the direction of
       positive Q), ``slip`` (accumulated, positive in the sense positive Q drives) and
       ``slip_increment``, each of shape (increments, cells); otherwise None;
@@ -360,6 +364,7 @@ class MarchResult:
     steady_change: Optional[float]
     steady_converged: Optional[bool]
     x: FloatArray
+    loop_datum: Optional[float]
     pressure: Optional[FloatArray]
     traction: Optional[FloatArray]
     slip: Optional[FloatArray]
@@ -375,6 +380,7 @@ class MarchResult:
         cycles_run: Optional[int] = None,
         steady_change: Optional[float] = None,
         steady_converged: Optional[bool] = None,
+        loop_datum: Optional[float] = None,
     ) -> None:
         fields = fields or {}
         values: Dict[str, Any] = {
@@ -385,6 +391,7 @@ class MarchResult:
             "steady_change": steady_change,
             "steady_converged": steady_converged,
             "x": x,
+            "loop_datum": loop_datum,
             "pressure": fields.get("pressure"),
             "traction": fields.get("traction"),
             "slip": fields.get("slip"),

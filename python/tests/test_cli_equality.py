@@ -94,6 +94,10 @@ def test_march_equals_the_command(cli, path):
     assert result.cycles_run == report["cycles_run"]
     assert result.steady_change == report["steady_change"]
     assert result.steady_converged == report["steady_converged"]
+    assert result.loop_datum == report["loop_datum"]
+    assert list(result.steps["relative_displacement"]) == [
+        s["relative_displacement"] for s in report["steps"]
+    ]
     assert result.cells == report["cells"]
     assert result.x[1] - result.x[0] == report["cell_width"]
     increments = len(report["steps"])

@@ -337,3 +337,54 @@ fn a_sub_cell_boundaries_that_is_not_a_switch_exits_2_naming_the_field() {
         }
     }
 }
+
+#[test]
+fn relative_displacement_is_cattaneo_mindlins_at_the_stated_datum() {
+    // Cattaneo-Mindlin (the case above): Q rises monotonically at constant P, so the bodies'
+    // relative displacement is path-independent and the one-increment march gives the closed form
+    // (`closed_form::cattaneo_mindlin_displacement`, from the traction by the log kernel). The
+    // datum is ten Hertz half-widths. Tolerance 5e-5 of the value: the grid's error at 400 cells
+    // (the library's loop test measures 2.3e-5 at that datum); the pressing increment moves
+    // nothing (exactly zero). The CSV column carries the JSON's numbers.
+    let case = cattaneo_case("");
+    let v = march_json(&case);
+    let contact = halfplane::reference::hertz();
+    let compliance = contact.compliance().value();
+    let a = halfplane::closed_form::hertz_half_width(compliance, 50.0, 1000.0);
+    let datum = v["loop_datum"].as_f64().unwrap();
+    assert!(
+        (datum - 10.0 * a).abs() < 1e-9 * datum,
+        "loop_datum {datum}, 10 a = {}",
+        10.0 * a
+    );
+    let steps = v["steps"].as_array().unwrap();
+    let delta: Vec<f64> = steps
+        .iter()
+        .map(|s| s["relative_displacement"].as_f64().unwrap())
+        .collect();
+    assert_eq!(
+        delta[0], 0.0,
+        "pressing alone moves the bodies apart tangentially"
+    );
+    let exact = halfplane::closed_form::cattaneo_mindlin_displacement(
+        compliance, a, 0.6, 1000.0, 300.0, datum,
+    );
+    assert!(
+        (delta[1] - exact).abs() < 5e-5 * exact.abs(),
+        "relative displacement {} against Cattaneo-Mindlin's {exact}",
+        delta[1]
+    );
+    let o = run(&["march", case.to_str().unwrap(), "--csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = header
+        .iter()
+        .position(|h| *h == "relative_displacement")
+        .expect("a relative_displacement column");
+    for (line, d) in lines.zip(&delta) {
+        let cell: f64 = line.split(',').nth(column).unwrap().parse().unwrap();
+        assert_eq!(cell, *d);
+    }
+}

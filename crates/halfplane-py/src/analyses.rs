@@ -125,8 +125,9 @@ pub(crate) const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
 /// One increment as a row of the `march --csv` columns, each computed as the CLI's report row
 /// computes it (`halfplane_case::report::march`): the largest stick interval (null when none) and
-/// every interval as `left:right`, space-separated.
-fn step_row(s: &march::StepReport) -> Node {
+/// every interval as `left:right`, space-separated; `relative_displacement` the bodies'
+/// relative displacement at the march's `loop_datum`.
+fn step_row(s: &march::StepReport, relative_displacement: f64) -> Node {
     let largest = s.largest_stick();
     let intervals: Vec<String> = s
         .stick_intervals
@@ -149,6 +150,7 @@ fn step_row(s: &march::StepReport) -> Node {
         ("moment", Node::Float(s.load.moment())),
         ("contact_left", Node::Float(s.ends.left)),
         ("contact_right", Node::Float(s.ends.right)),
+        ("relative_displacement", Node::Float(relative_displacement)),
     ];
     Node::Map(entries.map(|(k, v)| (k.to_string(), v)).to_vec())
 }
@@ -238,13 +240,19 @@ pub fn march_report<'py>(
         ControlFlow::Break(interrupt) => return Err(interrupt),
     };
     let out = PyDict::new(py);
-    let steps: Vec<Node> = result.steps.iter().map(step_row).collect();
+    let steps: Vec<Node> = result
+        .steps
+        .iter()
+        .zip(result.relative_displacements())
+        .map(|(s, d)| step_row(s, d))
+        .collect();
     let keys = csv_keys(&MarchStepRow::COLUMNS);
     out.set_item("steps", convert::columns(py, &Node::List(steps), &keys)?)?;
     let cycles = Node::List(result.cycles.iter().map(cycle_row).collect());
     let keys = ["index", "energy", "max_slip_amplitude"];
     out.set_item("cycles", convert::columns(py, &cycles, &keys)?)?;
     out.set_item("shakedown_cycle", result.shakedown_cycle)?;
+    out.set_item("loop_datum", result.loop_datum())?;
     out.set_item("cycles_run", result.cycles.len())?;
     out.set_item("steady_change", result.steady_change)?;
     out.set_item(

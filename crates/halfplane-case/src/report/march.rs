@@ -23,6 +23,8 @@ pub struct MarchStepRow<'a> {
     largest_stick: Option<[f64; 2]>,
     energy_increment: f64,
     energy: f64,
+    /// The bodies' relative tangential displacement, datum the report's `loop_datum`.
+    relative_displacement: f64,
     /// Solver passes: in the CSV only (the JSON never had it).
     #[serde(skip)]
     passes: usize,
@@ -39,7 +41,7 @@ impl<'a> MarchStepRow<'a> {
     /// The columns of the CSV and the summary table, in order. The stick columns hold the largest
     /// stick interval (empty in CSV, "-" in the table, when none), `stick_intervals` every
     /// interval as `left:right`, space-separated, and `runs` (table only) how many there are.
-    pub const COLUMNS: [StepColumn<'a>; 15] = {
+    pub const COLUMNS: [StepColumn<'a>; 16] = {
         use Quantity::{Energy, ForcePerLength, Length, Stress};
         use Style::Fixed;
         [
@@ -75,6 +77,10 @@ impl<'a> MarchStepRow<'a> {
                 .only(Shown::Csv),
             Column::<Self>::new("contact_right", Length, |r| Cell::Num(r.contact_right))
                 .only(Shown::Csv),
+            Column::<Self>::new("relative_displacement", Length, |r| {
+                Cell::Num(r.relative_displacement)
+            })
+            .only(Shown::Csv),
             Column::<Self>::new("runs", Quantity::None, |r| {
                 Cell::Int(r.stick_intervals.len())
             })
@@ -113,6 +119,8 @@ impl MarchCycleRow {
 pub struct MarchReport<'a> {
     cells: usize,
     cell_width: f64,
+    /// The datum of the steps' `relative_displacement` ([`MarchResult::loop_datum`]).
+    loop_datum: f64,
     steps: Vec<MarchStepRow<'a>>,
     cycles: Vec<MarchCycleRow>,
     shakedown_cycle: Option<usize>,
@@ -147,10 +155,12 @@ impl<'a> MarchReport<'a> {
             cells: result.x.len(),
             // A march has at least 8 cells (the solver rejects fewer).
             cell_width: result.x[1] - result.x[0],
+            loop_datum: result.loop_datum(),
             steps: result
                 .steps
                 .iter()
-                .map(|s| MarchStepRow {
+                .zip(result.relative_displacements())
+                .map(|(s, relative_displacement)| MarchStepRow {
                     step: s.step,
                     normal: s.load.normal(),
                     shear: s.load.shear(),
@@ -163,6 +173,7 @@ impl<'a> MarchReport<'a> {
                     largest_stick: s.largest_stick(),
                     energy_increment: s.energy_increment,
                     energy: s.energy,
+                    relative_displacement,
                     passes: s.passes,
                 })
                 .collect(),

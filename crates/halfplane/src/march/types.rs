@@ -280,7 +280,12 @@ impl RelativeDisplacement {
     /// [`Error::InvalidInput`] naming the datum when it is not a positive length.
     pub fn at(&self, datum: f64) -> Result<f64> {
         crate::error::physical_positive("relative displacement datum", datum)?;
-        Ok(self.at_scale + self.log_coefficient * (datum / self.scale).ln())
+        Ok(self.at_positive(datum))
+    }
+
+    /// [`RelativeDisplacement::at`] for a datum known to be a positive length.
+    fn at_positive(&self, datum: f64) -> f64 {
+        self.at_scale + self.log_coefficient * (datum / self.scale).ln()
     }
 }
 
@@ -329,4 +334,40 @@ pub struct MarchResult {
     /// `None` with fewer than two cycles. For a march until steady, the change that met the
     /// tolerance.
     pub steady_change: Option<f64>,
+}
+
+impl MarchResult {
+    /// The datum at which the front ends report each increment's relative displacement
+    /// ([`MarchResult::relative_displacements`]): ten times the largest contact half-width the
+    /// march reached, far enough that the contact's traction acts on the datum points as a point
+    /// load (as `[wear] loop_datum` defaults to ten unworn half-widths); the distance between the
+    /// outer cell centres if nothing touched. Always a length > 0.
+    pub fn loop_datum(&self) -> f64 {
+        let largest = self
+            .steps
+            .iter()
+            .map(|s| 0.5 * (s.ends.right - s.ends.left))
+            .fold(0.0, f64::max);
+        // Nothing touched: no shear, so every displacement is zero whatever the (positive) datum.
+        let span = match (self.x.first(), self.x.last()) {
+            (Some(a), Some(b)) if b > a => b - a,
+            _ => 1.0,
+        };
+        if largest > 0.0 {
+            10.0 * largest
+        } else {
+            span
+        }
+    }
+
+    /// The bodies' relative tangential displacement after each increment (the fretting loop
+    /// against each step's Q), at the datum [`MarchResult::loop_datum`]:
+    /// [`RelativeDisplacement`] for the definition and sign.
+    pub fn relative_displacements(&self) -> Vec<f64> {
+        let datum = self.loop_datum();
+        self.steps
+            .iter()
+            .map(|s| s.relative_displacement.at_positive(datum))
+            .collect()
+    }
 }
