@@ -50,9 +50,10 @@ fn partial_slip_wears_onto_the_stick_zone() {
         .map(|c| c["cycle"].as_u64().unwrap())
         .collect();
     assert_eq!(cycles, [1, 10, 100, 1000, 10_000, 100_000, 1_000_000]);
-    // Cycle jumping: a million cycles from well under a thousand marched.
+    // Cycle jumping: a million cycles from a few thousand marched (the stability bound holds
+    // the jumps to a few hundred cycles while the annuli carry load: docs/wear.md).
     let marched = v["simulated_cycles"].as_u64().unwrap();
-    assert!((7..1000).contains(&marched), "{marched} cycles marched");
+    assert!((7..5000).contains(&marched), "{marched} cycles marched");
     let width = num(&v, "cell_width");
     let c = 0.7611 * 0.5f64.sqrt();
     let points = v["checkpoints"].as_array().unwrap();

@@ -42,6 +42,10 @@ impl WornCycle for Watched<'_> {
         self.worn.elastic_approach()
     }
 
+    fn pressure_stiffness(&self) -> f64 {
+        self.worn.pressure_stiffness()
+    }
+
     fn cycle(&mut self, depth: &[f64]) -> halfplane::Result<CycleWear> {
         if self.last_check.elapsed() >= SIGNAL_CHECK_INTERVAL {
             self.last_check = Instant::now();

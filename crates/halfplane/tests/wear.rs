@@ -53,9 +53,8 @@ fn the_stick_zone_never_wears_and_the_contact_shrinks_onto_it() {
     // Worn out of contact, the annuli stop slipping: the stick zone carries the load alone and
     // nothing more is dissipated (q/p at its punch-like edges is Q/P < f). Exact theory gets
     // there only asymptotically (an annulus's pressure decays like its wear rate), so the
-    // tolerances are what the tail leaves: at a jump bound of 0.005 (converged, docs/wear.md)
-    // the example's 1e6 cycles leave 6e-5 of the first cycle's energy and 4e-6 of P outside the
-    // stick zone; 1e-3 of each.
+    // tolerances are what the tail leaves; 1e-3 of each (the example's 1e6 cycles leave none,
+    // docs/wear.md).
     let last = r.checkpoints.last().unwrap();
     let first = &r.checkpoints[0];
     assert!(
@@ -75,9 +74,11 @@ fn the_stick_zone_never_wears_and_the_contact_shrinks_onto_it() {
         outside < 1e-3 * P,
         "the worn annuli still carry {outside} of P = {P} after 1e6 cycles"
     );
-    // 1e6 cycles in few marches: the jumps stop when the annuli stop wearing.
+    // 1e6 cycles in a few thousand marches: while the annuli carry load the jumps are held to
+    // the stability bound (hundreds of cycles here, docs/wear.md), and once nothing slips they
+    // run to the next checkpoint.
     assert!(
-        r.simulated_cycles < 100,
+        r.simulated_cycles < 5_000,
         "{} cycles marched",
         r.simulated_cycles
     );
@@ -177,6 +178,45 @@ fn a_sliding_cylinder_wears_a_scar_tending_to_the_rigid_one() {
     assert!(
         end < first - 0.05 && end > 1.0,
         "peak over mean {end} after 1e5 cycles, unworn {first}: not tending to uniform"
+    );
+}
+
+#[test]
+fn jumps_stay_within_the_stability_bound_so_the_worn_profile_stays_smooth() {
+    // Gross sliding of the Hertz cylinder with a loose depth bound (0.1 of the elastic
+    // approach): the depth bound alone would take jumps of 565 cycles, 3.3 times the cycles at
+    // which the cell-to-cell mode of the worn profile grows (forward Euler on the depth, with
+    // the grid's stiffest pressure response pi^2/(4 C A w), C Catalan's constant: docs/wear.md,
+    // "Cycle jumping"). Without the stability bound this run ends on a checkerboard, every other
+    // contact cell at zero pressure (checked by hand, raising the bound's number, `STABILITY`,
+    // from 1 to 1e9: 34 zero-pressure cells inside the contact). With it the pressure stays
+    // positive across the contact and mirror symmetric to rounding (1e-9 of the peak; the
+    // symmetric grid mirrors the problem).
+    let contact = reference::hertz();
+    let options = MarchOptions::default().with_cells(400).unwrap();
+    let load = LoadPoint::new("load", P, 0.0, 0.0).unwrap();
+    let mut worn = Worn::sliding(&contact, load, 0.02, 10, 10, &options, 8.0).unwrap();
+    let wear = WearOptions::new(Law::Archard, 3e-8, 30_000, &[30_000])
+        .unwrap()
+        .with_max_depth_increment(0.1)
+        .unwrap();
+    let r = wear::run(&mut worn, &wear, |_| {}).unwrap();
+    let f = &r.checkpoints[0].fields;
+    let n = f.pressure.len();
+    let touching: Vec<usize> = (0..n).filter(|&i| f.pressure[i] > 0.0).collect();
+    let (first, last) = (touching[0], touching[touching.len() - 1]);
+    let holes = (first..=last).filter(|&i| f.pressure[i] == 0.0).count();
+    assert_eq!(
+        holes, 0,
+        "cells without pressure inside the contact: a checkerboard"
+    );
+    let peak = f.pressure.iter().copied().fold(0.0, f64::max);
+    let lopsided = (0..n)
+        .map(|i| (f.pressure[i] - f.pressure[n - 1 - i]).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        lopsided < 1e-9 * peak,
+        "mirror cells differ by {lopsided} of a peak {peak}: the worn profile oscillates"
     );
 }
 

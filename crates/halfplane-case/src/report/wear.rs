@@ -345,7 +345,7 @@ impl WearReport {
         let mut o = String::new();
         let _ = writeln!(
             o,
-            "wear: {} law, coefficient {:e} 1/{}, pad share {}, {} cycles ({} marched, jumps adding at most {} of the elastic approach {} {})",
+            "wear: {} law, coefficient {:e} 1/{}, pad share {}, {} cycles ({} marched, jumps adding at most {} of the elastic approach {} {} and kept stable)",
             self.law,
             self.coefficient,
             self.units.stress,

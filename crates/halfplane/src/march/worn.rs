@@ -341,6 +341,12 @@ impl WornCycle for Worn {
         self.approach
     }
 
+    fn pressure_stiffness(&self) -> f64 {
+        std::f64::consts::PI
+            / (self.marcher.compliance
+                * super::kernel::smallest_eigenvalue_bound(self.marcher.width))
+    }
+
     fn cycle(&mut self, depth: &[f64]) -> Result<CycleWear> {
         let n = self.base.len();
         let gap: Vec<f64> = self.base.iter().zip(depth).map(|(g, d)| g + d).collect();

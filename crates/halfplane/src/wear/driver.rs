@@ -1,10 +1,19 @@
 //! The cycle-jumping loop (docs/wear.md, "Cycle jumping"): march a cycle over the current
 //! gap, extrapolate its wear over as many cycles as keep the largest added depth below the
-//! bound, stop at every checkpoint.
+//! bound and the worn profile stable, stop at every checkpoint.
 
 use super::{Checkpoint, CheckpointFields, Law, WearOptions, WearResult};
 use crate::error::{Error, Result};
 use crate::fatigue::CycleTractions;
+
+/// The stability number of a jump, `J max_i(m_i) K` (at most this): a jump of J cycles is a
+/// forward-Euler step of the depth, `d += J m p(d)` with `m_i` = wear per cycle per unit pressure
+/// at cell i, and the pressure answers a depth change by `-K` times it at most (the zigzag mode,
+/// [`WornCycle::pressure_stiffness`]). So that mode is multiplied by `1 - J m K` per jump: it
+/// grows once that passes -1 (the profile oscillates cell to cell, pressures alternating with
+/// zero: measured at 800 cells and a depth bound of 0.02, docs/wear.md) and at 1 it is damped in
+/// one jump, with no overshoot.
+const STABILITY: f64 = 1.0;
 
 /// What one marched cycle over a worn gap gives the wear loop, one value per cell where a
 /// vector.
@@ -49,6 +58,11 @@ pub trait WornCycle {
     /// The elastic approach of the unworn contact (the bound on a jump's depth is a fraction
     /// of it).
     fn elastic_approach(&self) -> f64;
+    /// The largest pressure change per unit depth change of the gap on this grid: the stiffness
+    /// of its stiffest (cell-to-cell) mode, `pi / (A lambda_min)` with `lambda_min` the cell
+    /// matrix's smallest eigenvalue (`march::kernel::smallest_eigenvalue_bound`). It bounds
+    /// the jumps ([`STABILITY`]).
+    fn pressure_stiffness(&self) -> f64;
     /// Marches the next cycle with `depth` (both bodies, one value per cell) added to the gap.
     fn cycle(&mut self, depth: &[f64]) -> Result<CycleWear>;
     /// The tractions of every increment of the last cycle, when the march keeps them
@@ -61,8 +75,9 @@ pub trait WornCycle {
 
 /// Runs `options.cycles()` physical cycles: each simulated cycle marched by `worn`, its wear
 /// extrapolated over a jump (the largest added depth at most `max_depth_increment` times the
-/// elastic approach, at least one cycle, ending on every checkpoint), each checkpoint handed to
-/// `observer` as it is reached.
+/// elastic approach, and at most the cycles that keep the worn profile stable, [`STABILITY`];
+/// at least one cycle, ending on every checkpoint), each checkpoint handed to `observer` as it
+/// is reached.
 ///
 /// Wear per cycle at a cell: Archard `k integral p |ds|`, energy `alpha f integral p |ds|`; the
 /// volume is their sum times the cell width (both bodies).
@@ -79,6 +94,7 @@ pub fn run(
     let n = worn.x().len();
     let width = worn.width();
     let approach = worn.elastic_approach();
+    let stiffness = worn.pressure_stiffness();
     let bound = options.max_depth_increment() * approach;
     let mut depth = vec![0.0; n];
     let (mut cycle, mut volume, mut energy) = (0u64, 0.0, 0.0);
@@ -97,12 +113,26 @@ pub fn run(
             };
             let rate: Vec<f64> = w.pressure_slip.iter().map(|ps| factor * ps).collect();
             let largest = rate.iter().copied().fold(0.0, f64::max);
-            let room = target - cycle;
-            let jump = if largest > 0.0 {
-                ((bound / largest).floor() as u64).clamp(1, room)
-            } else {
-                room
+            let per_cycle = sensitivity(&rate, &w.pressure) * stiffness;
+            if per_cycle > 2.0 {
+                // Even single cycles would make the profile oscillate: no jump rule helps.
+                return Err(Error::WearStopped {
+                    cycle: cycle + 1,
+                    cause: Box::new(Error::InvalidInput {
+                        field: "wear.coefficient".into(),
+                        value: options.coefficient(),
+                        valid: "a wear per cycle the grid can follow: one cycle's wear changes the pressure of neighbouring cells by more than twice itself (the worn profile would oscillate cell to cell); use fewer cells (solver.cells) or a smaller coefficient",
+                    }),
+                });
+            }
+            let cycles_within = |per: f64, allowed: f64| match per > 0.0 {
+                true => (allowed / per).floor() as u64,
+                false => u64::MAX,
             };
+            let room = target - cycle;
+            let jump = cycles_within(largest, bound)
+                .min(cycles_within(per_cycle, STABILITY))
+                .clamp(1, room);
             let j = jump as f64;
             for (d, r) in depth.iter_mut().zip(&rate) {
                 *d += j * r;
@@ -134,6 +164,16 @@ pub fn run(
         simulated_cycles: simulated,
         elastic_approach: approach,
     })
+}
+
+/// The largest wear per cycle per unit pressure, `m_i = rate_i / p_i` over the loaded cells (the
+/// rate is linear in the pressure, which is constant along the cycle).
+fn sensitivity(rate: &[f64], pressure: &[f64]) -> f64 {
+    rate.iter()
+        .zip(pressure)
+        .filter(|(_, p)| **p > 0.0)
+        .map(|(r, p)| r / p)
+        .fold(0.0, f64::max)
 }
 
 /// The checkpoint's per-cycle quantities and fields (the totals are the caller's).
@@ -193,6 +233,10 @@ mod tests {
             self.x[1] - self.x[0]
         }
         fn elastic_approach(&self) -> f64 {
+            1e-3
+        }
+        fn pressure_stiffness(&self) -> f64 {
+            // Soft enough that the depth bound decides every jump.
             1e-3
         }
         fn cycle(&mut self, _: &[f64]) -> Result<CycleWear> {
