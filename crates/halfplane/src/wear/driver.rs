@@ -61,7 +61,7 @@ pub trait WornCycle {
     /// The largest pressure change per unit depth change of the gap on this grid: the stiffness
     /// of its stiffest (cell-to-cell) mode, `pi / (A lambda_min)` with `lambda_min` the cell
     /// matrix's smallest eigenvalue (`march::kernel::smallest_eigenvalue_bound`). It bounds
-    /// the jumps ([`STABILITY`]).
+    /// the jumps (docs/wear.md, "Cycle jumping").
     fn pressure_stiffness(&self) -> f64;
     /// Marches the next cycle with `depth` (both bodies, one value per cell) added to the gap.
     fn cycle(&mut self, depth: &[f64]) -> Result<CycleWear>;
@@ -75,7 +75,7 @@ pub trait WornCycle {
 
 /// Runs `options.cycles()` physical cycles: each simulated cycle marched by `worn`, its wear
 /// extrapolated over a jump (the largest added depth at most `max_depth_increment` times the
-/// elastic approach, and at most the cycles that keep the worn profile stable, [`STABILITY`];
+/// elastic approach, and at most the cycles that keep the worn profile stable, `J m K <= 1`;
 /// at least one cycle, ending on every checkpoint), each checkpoint handed to `observer` as it
 /// is reached.
 ///
