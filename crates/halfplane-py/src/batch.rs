@@ -5,7 +5,7 @@
 
 use crate::errors;
 use halfplane::batch::{
-    self, Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_COLUMNS, STEADY_INPUT_COLUMNS,
+    self, Batch, ProfileKind, SteadyRow, SteadySummary, STEADY_INPUT_COLUMNS, STEADY_NUMBERS,
 };
 use halfplane::{Error, Regime, SteadyOptions};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
@@ -33,7 +33,7 @@ fn numeric_columns() -> impl Iterator<Item = &'static str> {
 /// How many numeric input columns there are.
 const NUMERIC_COUNT: usize = STEADY_INPUT_COLUMNS.len() - 1;
 
-/// Regime codes, the eight numbers of `STEADY_COLUMNS` as one (8, rows) array (a column per
+/// Regime codes, the `STEADY_NUMBERS` numbers of `STEADY_COLUMNS` as one (8, rows) array (a column per
 /// row of it), the failed rows, in order, and their messages.
 type Output<'py> = (
     Bound<'py, PyArray1<i8>>,
@@ -43,13 +43,10 @@ type Output<'py> = (
 );
 
 /// The columns one worker writes: regime codes and the eight numbers, for a block of rows.
-type Block<'a> = (&'a mut [i8], [&'a mut [f64]; NUMBER_COUNT]);
+type Block<'a> = (&'a mut [i8], [&'a mut [f64]; STEADY_NUMBERS]);
 
-/// How many numbers a summary has (`STEADY_COLUMNS` without `regime` and `error`).
-const NUMBER_COUNT: usize = STEADY_COLUMNS.len() - 2;
-
-/// `values` (NUMBER_COUNT x rows, row-major) as one slice per column.
-fn number_columns(values: &mut [f64], rows: usize) -> [&mut [f64]; NUMBER_COUNT] {
+/// `values` (STEADY_NUMBERS x rows, row-major) as one slice per column.
+fn number_columns(values: &mut [f64], rows: usize) -> [&mut [f64]; STEADY_NUMBERS] {
     let mut rest = values;
     std::array::from_fn(|_| {
         let (column, tail) = std::mem::take(&mut rest).split_at_mut(rows);
@@ -149,7 +146,7 @@ pub fn steady_batch_columns<'py>(
     // backs large arrays with huge pages, so the first write into 65 bytes per row faults far
     // less than a fresh Vec does. Every row writes all its values: the zeros are never read.
     let regimes = PyArray1::<i8>::zeros(py, rows, false);
-    let numbers = PyArray2::<f64>::zeros(py, [NUMBER_COUNT, rows], false);
+    let numbers = PyArray2::<f64>::zeros(py, [STEADY_NUMBERS, rows], false);
     let mut regimes_view = regimes.readwrite();
     let mut numbers_view = numbers.readwrite();
     let contiguous = |e: numpy::AsSliceError| PyValueError::new_err(e.to_string());
@@ -168,7 +165,7 @@ pub fn steady_batch_columns<'py>(
                 Err(e) => {
                     *code_out = -1;
                     failed.push((first + k, e.to_string()));
-                    [f64::NAN; NUMBER_COUNT]
+                    [f64::NAN; STEADY_NUMBERS]
                 }
             };
             for (column, x) in numbers.iter_mut().zip(row) {

@@ -221,6 +221,9 @@ pub const STEADY_COLUMNS: [&str; 10] = [
     "error",
 ];
 
+/// How many numbers a steady summary has: [`STEADY_COLUMNS`] without `regime` and `error`.
+pub const STEADY_NUMBERS: usize = STEADY_COLUMNS.len() - 2;
+
 /// One case's steady state in the few numbers a design map needs. Points are as given (1, 2);
 /// lengths in the case's length unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -247,10 +250,10 @@ impl SteadySummary {
         self.regime
     }
 
-    /// The eight numbers of [`STEADY_COLUMNS`] after `regime` and before `error`: stick zone ends
+    /// The [`STEADY_NUMBERS`] numbers of [`STEADY_COLUMNS`] after `regime` and before `error`: stick zone ends
     /// (NaN in gross sliding), half-widths at points 1 and 2, slip zones left 1, 2, right 1, 2
     /// (NaN in gross sliding, 0 in full stick).
-    pub fn numbers(&self) -> [f64; 8] {
+    pub fn numbers(&self) -> [f64; STEADY_NUMBERS] {
         let (left, right) = self.stick_zone.unwrap_or((f64::NAN, f64::NAN));
         let nan = PerPoint {
             first: f64::NAN,

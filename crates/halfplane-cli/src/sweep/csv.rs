@@ -5,6 +5,7 @@ use super::spec::Analysis;
 use super::template::Outcome;
 use super::{Layout, RowSink};
 use anyhow::{anyhow, Context, Result};
+use halfplane::batch::{MARCH_COLUMNS, STEADY_NUMBERS};
 use std::fmt::Write as _;
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -117,7 +118,7 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
                 num(&mut s, v);
             }
         }
-        None => s.push_str(",,,,,,,,"),
+        None => s.push_str(&",".repeat(STEADY_NUMBERS)),
     }
     s.push(',');
     text(&mut s, &outcome.error);
@@ -144,7 +145,7 @@ pub fn line(layout: &Layout, values: &[f64], outcome: &Outcome) -> String {
                     let _ = write!(s, "{met}");
                 }
             }
-            None => s.push_str(",,,,,,,,"),
+            None => s.push_str(&",".repeat(MARCH_COLUMNS.len())),
         }
     }
     if layout.analysis == Analysis::Crack {

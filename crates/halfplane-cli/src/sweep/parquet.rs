@@ -101,7 +101,7 @@ impl ParquetSink {
             regime.append_option(r.outcome.steady.map(|s| s.regime().as_str()));
         }
         columns.push(Arc::new(regime.finish()));
-        for k in 0..8 {
+        for k in 0..halfplane::batch::STEADY_NUMBERS {
             columns.push(finite_column(rows, |o| o.steady.map(|s| s.numbers()[k])));
         }
         let mut error = StringBuilder::new();
