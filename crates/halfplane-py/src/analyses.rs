@@ -11,9 +11,9 @@ use halfplane::march::{self, Fields};
 use halfplane::{asymptotic, evolution, steady, Regime, SteadyOptions};
 use halfplane_case::limits;
 use halfplane_case::report::evolve::{EvolveReport, EvolveRow};
-use halfplane_case::report::march::MarchStepRow;
+use halfplane_case::report::march::{MarchReport, MarchStepRow};
 use halfplane_case::report::steady::SteadyReport;
-use halfplane_case::report::{Column, Shown};
+use halfplane_case::report::{Cell, Column, Shown};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
@@ -123,36 +123,15 @@ impl Recorded {
 /// interrupt feels immediate, rarely enough that the check costs nothing measurable.
 pub(crate) const SIGNAL_CHECK_INTERVAL: Duration = Duration::from_millis(50);
 
-/// One increment as a row of the `march --csv` columns, each computed as the CLI's report row
-/// computes it (`halfplane_case::report::march`): the largest stick interval (null when none) and
-/// every interval as `left:right`, space-separated; `relative_displacement` the bodies'
-/// relative displacement at the march's `loop_datum`.
-fn step_row(s: &march::StepReport, relative_displacement: f64) -> Node {
-    let largest = s.largest_stick();
-    let intervals: Vec<String> = s
-        .stick_intervals
-        .iter()
-        .map(|[l, r]| format!("{l}:{r}"))
-        .collect();
-    let stick = |side: usize| largest.map_or(Node::Null, |z| Node::Float(z[side]));
-    let entries = [
-        ("step", Node::UInt(s.step as u64)),
-        ("normal", Node::Float(s.load.normal())),
-        ("shear", Node::Float(s.load.shear())),
-        ("bulk", Node::Float(s.load.bulk())),
-        ("half_width", Node::Float(s.half_width)),
-        ("stick_left", stick(0)),
-        ("stick_right", stick(1)),
-        ("stick_intervals", Node::Str(intervals.join(" "))),
-        ("energy_increment", Node::Float(s.energy_increment)),
-        ("energy", Node::Float(s.energy)),
-        ("passes", Node::UInt(s.passes as u64)),
-        ("moment", Node::Float(s.load.moment())),
-        ("contact_left", Node::Float(s.ends.left)),
-        ("contact_right", Node::Float(s.ends.right)),
-        ("relative_displacement", Node::Float(relative_displacement)),
-    ];
-    Node::Map(entries.map(|(k, v)| (k.to_string(), v)).to_vec())
+/// A report cell as a Python value: a count as int, a number as float, text as str, a missing
+/// value as None.
+fn cell_node(cell: Cell) -> Node {
+    match cell {
+        Cell::Int(i) => Node::UInt(i as u64),
+        Cell::Num(v) => Node::Float(v),
+        Cell::Text(t) => Node::Str(t),
+        Cell::Missing => Node::Null,
+    }
 }
 
 /// One cycle as a row of `march --json`'s `cycles`.
@@ -240,11 +219,23 @@ pub fn march_report<'py>(
         ControlFlow::Break(interrupt) => return Err(interrupt),
     };
     let out = PyDict::new(py);
-    let steps: Vec<Node> = result
-        .steps
+    // The rows of `march --csv`, through the report's own columns.
+    let report = MarchReport::new(&result, &case.units, &steady, until_steady.is_some());
+    let columns: Vec<&Column<MarchStepRow>> = MarchStepRow::COLUMNS
         .iter()
-        .zip(result.relative_displacements())
-        .map(|(s, d)| step_row(s, d))
+        .filter(|c| c.shown != Shown::Table)
+        .collect();
+    let steps: Vec<Node> = report
+        .step_rows()
+        .iter()
+        .map(|row| {
+            Node::Map(
+                columns
+                    .iter()
+                    .map(|c| (c.key.to_string(), cell_node((c.get)(row))))
+                    .collect(),
+            )
+        })
         .collect();
     let keys = csv_keys(&MarchStepRow::COLUMNS);
     out.set_item("steps", convert::columns(py, &Node::List(steps), &keys)?)?;

@@ -196,6 +196,11 @@ impl<'a> MarchReport<'a> {
         }
     }
 
+    /// The increments' rows (their values through [`MarchStepRow::COLUMNS`]).
+    pub fn step_rows(&self) -> &[MarchStepRow<'a>] {
+        &self.steps
+    }
+
     /// One CSV row per increment.
     pub fn csv(&self) -> String {
         super::csv(&MarchStepRow::COLUMNS, &self.steps)
