@@ -223,6 +223,7 @@ mod tests {
         x: Vec<f64>,
         profile: Vec<f64>,
         cycles: usize,
+        stiffness: f64,
     }
 
     impl WornCycle for Steady {
@@ -236,8 +237,7 @@ mod tests {
             1e-3
         }
         fn pressure_stiffness(&self) -> f64 {
-            // Soft enough that the depth bound decides every jump.
-            1e-3
+            self.stiffness
         }
         fn cycle(&mut self, _: &[f64]) -> Result<CycleWear> {
             self.cycles += 1;
@@ -266,6 +266,8 @@ mod tests {
             x,
             profile: profile.clone(),
             cycles: 0,
+            // Soft enough that the depth bound decides every jump.
+            stiffness: 1e-3,
         };
         let options = WearOptions::new(Law::Energy, 1e-9, 1_000, &[1, 7, 500])
             .unwrap()
@@ -284,6 +286,40 @@ mod tests {
         // Cycle 1; 6 cycles to 7 in one jump; 222, 222 and 49 to 500; 222, 222 and 56 to 1000.
         assert_eq!(r.simulated_cycles, 8);
         assert_eq!(worn.cycles, r.simulated_cycles);
+    }
+
+    #[test]
+    fn jumps_keep_to_the_stability_bound_and_an_unstable_cycle_is_an_error() {
+        // m = 1e-9 x 0.5 x 20 i / 1 per cycle at cell i (pressure 1): the largest, 9e-8 at the
+        // last cell, with K = 1e5 gives m K = 9e-3, so jumps of floor(1/9e-3) = 111 cycles,
+        // shorter than the depth bound's 222 (the test above).
+        let x: Vec<f64> = (0..10).map(|i| 0.1 * i as f64).collect();
+        let profile: Vec<f64> = (0..10).map(|i| 20.0 * i as f64).collect();
+        let options = WearOptions::new(Law::Energy, 1e-9, 1_000, &[])
+            .unwrap()
+            .with_max_depth_increment(0.02)
+            .unwrap();
+        let mut worn = Steady {
+            x: x.clone(),
+            profile: profile.clone(),
+            cycles: 0,
+            stiffness: 1e5,
+        };
+        let r = run(&mut worn, &options, |_| {}).unwrap();
+        // 9 jumps of 111 cycles and a last one of 1 to land on 1000.
+        assert_eq!(r.simulated_cycles, 10);
+        // m K = 9e-8 x 3e7 = 2.7 > 2: one cycle already makes the zigzag mode grow.
+        let mut worn = Steady {
+            x,
+            profile,
+            cycles: 0,
+            stiffness: 3e7,
+        };
+        let e = run(&mut worn, &options, |_| {}).unwrap_err();
+        assert!(
+            matches!(&e, Error::WearStopped { cycle: 1, cause } if cause.to_string().contains("wear.coefficient")),
+            "{e}"
+        );
     }
 
     #[test]
