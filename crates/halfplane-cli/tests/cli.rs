@@ -393,3 +393,47 @@ fn messages_echo_numbers_as_people_write_them() {
         assert!(!stderr(&o).contains("00000000"), "{to}: {}", stderr(&o));
     }
 }
+
+/// The same for values the case crate checks itself: a history row, `wear.span` and `match`'s
+/// geometry options echoed 1e300 and 1e-300 as hundreds of digits.
+#[test]
+fn history_rows_wear_span_and_match_options_echo_numbers_as_written() {
+    let history = case_with(
+        "written-history",
+        &GOOD.replace("[cycle]", "[history]\nfile = \"p.csv\"\n[cycle]"),
+        Some("normal,shear,bulk\n1e300,0,0\n"),
+    );
+    let wear = case_with(
+        "written-wear",
+        &format!(
+            "{GOOD}[history]\nkind = \"sliding\"\nnormal = 1000.0\namplitude = 0.02\nsteps_per_half = 4\nramp_steps = 4\n\
+             [wear]\nlaw = \"archard\"\ncoefficient = 3e-8\ncycles = 10\nspan = 1e300\n"
+        ),
+        None,
+    );
+    let prototype = case_with("written-match", GOOD, None);
+    let test = prototype.with_file_name("test.toml");
+    let runs: [(Vec<&str>, &str); 3] = [
+        (vec!["march", history.to_str().unwrap()], "normal = 1e300:"),
+        (vec!["wear", wear.to_str().unwrap()], "wear.span = 1e300:"),
+        (
+            vec![
+                "match",
+                prototype.to_str().unwrap(),
+                "--profile",
+                "hertz",
+                "--radius",
+                "1e-300",
+                "-o",
+                test.to_str().unwrap(),
+            ],
+            "--radius = 1e-300:",
+        ),
+    ];
+    for (args, expected) in runs {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("00000000"), "{args:?}: {}", stderr(&o));
+    }
+}
