@@ -4,6 +4,7 @@
 use anyhow::{anyhow, bail, Context, Result};
 use halfplane::history::{Harmonic, History, Ramp, Steady};
 use halfplane::march::MarchOptions;
+use halfplane::written::Written;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 use serde::Deserialize;
 use std::path::Path;
@@ -577,7 +578,10 @@ fn resolve_sliding(h: RawHistory) -> Result<Sliding> {
         anyhow!("missing field history.amplitude: give the distance the bodies slide each way once Q reaches f P (> 0, mm)")
     })?;
     if !(amplitude.is_finite() && amplitude > 0.0) {
-        bail!("invalid history.amplitude = {amplitude}: must be a finite sliding displacement > 0 (mm)");
+        bail!(
+            "invalid history.amplitude = {}: must be a finite sliding displacement > 0 (mm)",
+            Written(amplitude)
+        );
     }
     let steps_per_half = match &h.steps_per_half {
         Some(v) => count_in(v, "history.steps_per_half", 1, max)?,

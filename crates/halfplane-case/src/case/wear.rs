@@ -178,7 +178,7 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
     }
     let loop_datum = number(table, "loop_datum")?;
     if let Some(d) = loop_datum.filter(|d| !(d.is_finite() && *d > 0.0)) {
-        bail!("invalid wear.loop_datum = {d}: must be a length > 0 (the distance from the contact at which the fretting loop's displacement is measured)");
+        bail!("invalid wear.loop_datum = {}: must be a length > 0 (the distance from the contact at which the fretting loop's displacement is measured)", Written(d));
     }
     Ok(WearSettings {
         options,
