@@ -398,6 +398,22 @@ fn too_many_profile_rows_are_a_clear_error() {
     assert_clear_error("rows", &o, &["profile.file", "1000000"]);
 }
 
+/// A file that is not a table (a binary file, or /dev/zero, with no line ends) is rejected at
+/// its first overlong line: the reader held the whole line, growing without bound on an endless
+/// file, and echoed all of it in the message.
+#[test]
+fn an_overlong_line_is_a_clear_error_not_unbounded_memory() {
+    let line = "0".repeat(2 << 20);
+    let path = tabulated_case("long-line", format!("x,g\n{line}").as_bytes(), b"", "\n");
+    let o = run(&["steady", path.to_str().unwrap()]);
+    assert_clear_error("line", &o, &["profile.file", "line 2", "longer than"]);
+    assert!(
+        stderr(&o).len() < 2000,
+        "the message is short: {}",
+        stderr(&o).len()
+    );
+}
+
 #[test]
 fn the_march_summary_lists_every_increment_of_a_long_history() {
     // The summary used to search the list of rows once per row (100,000 increments: 68 s in
