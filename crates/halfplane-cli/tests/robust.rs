@@ -414,6 +414,30 @@ fn an_overlong_line_is_a_clear_error_not_unbounded_memory() {
     );
 }
 
+/// A case file or sweep spec that is not text (a binary file, /dev/zero) is rejected at its
+/// first NUL byte, which TOML never allows: the whole file was read first, without bound on an
+/// endless one.
+#[test]
+fn a_binary_case_file_or_spec_is_a_clear_error() {
+    let dir = scratch("binary-case");
+    let binary = dir.join("case.toml");
+    std::fs::write(&binary, b"[material]\n\0\x01\x02").unwrap();
+    let binary = binary.to_str().unwrap();
+    let out = dir.join("out.csv");
+    let mut runs = vec![
+        vec!["steady", binary],
+        vec!["sweep", binary, "-o", out.to_str().unwrap()],
+    ];
+    if cfg!(target_os = "linux") {
+        runs.push(vec!["steady", "/dev/zero"]);
+        runs.push(vec!["sweep", "/dev/zero", "-o", out.to_str().unwrap()]);
+    }
+    for args in runs {
+        let o = run(&args);
+        assert_clear_error(&args.join(" "), &o, &["not a text file", args[1]]);
+    }
+}
+
 #[test]
 fn the_march_summary_lists_every_increment_of_a_long_history() {
     // The summary used to search the list of rows once per row (100,000 increments: 68 s in
