@@ -646,7 +646,7 @@ fn resolve_history(
     let kind = match (&h.kind, h.file.is_some() || h.data.is_some()) {
         (Some(k), _) => k.clone(),
         (None, true) => "file".to_string(),
-        (None, false) => bail!("missing field history.kind: give \"file\" (with file = ... or data = ...), \"cycle\" or \"harmonic\""),
+        (None, false) => bail!("missing field history.kind: give \"file\" (with file = ... or data = ...), \"cycle\", \"harmonic\" or \"sliding\" (wear only)"),
     };
     let used: &[&str] = match kind.as_str() {
         "file" => &["file", "data"],
