@@ -414,6 +414,27 @@ fn an_overlong_line_is_a_clear_error_not_unbounded_memory() {
     );
 }
 
+/// The same for a sweep's output read by `plot design-map`.
+#[test]
+fn an_overlong_line_in_a_sweep_output_is_a_clear_error() {
+    let dir = scratch("long-sweep-line");
+    let table = dir.join("sweep.csv");
+    std::fs::write(&table, format!("a,b,regime\n{}", "0".repeat(2 << 20))).unwrap();
+    let png = dir.join("map.png");
+    let o = run(&[
+        "plot",
+        "design-map",
+        table.to_str().unwrap(),
+        "--x",
+        "a",
+        "--y",
+        "b",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_clear_error("sweep line", &o, &["sweep.csv", "line 2", "longer than"]);
+}
+
 /// A case file or sweep spec that is not text (a binary file, /dev/zero) is rejected at its
 /// first NUL byte, which TOML never allows: the whole file was read first, without bound on an
 /// endless one.
