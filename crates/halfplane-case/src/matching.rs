@@ -6,6 +6,7 @@ use crate::case::Case;
 use anyhow::{anyhow, bail, Result};
 use halfplane::history::History;
 use halfplane::matching::{self, MatchReport, Mode};
+use halfplane::written::Written;
 use halfplane::{Contact, Error, Friction, LoadPoint, Material, Profile};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -181,7 +182,7 @@ fn option_error(e: Error) -> anyhow::Error {
                 "friction.coefficient" => "--friction",
                 other => other,
             };
-            anyhow!("invalid {option} = {value}: must be {valid}")
+            anyhow!("invalid {option} = {}: must be {valid}", Written(value))
         }
         other => other.into(),
     }

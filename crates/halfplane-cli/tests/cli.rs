@@ -393,3 +393,106 @@ fn messages_echo_numbers_as_people_write_them() {
         assert!(!stderr(&o).contains("00000000"), "{to}: {}", stderr(&o));
     }
 }
+
+/// The same for values the case crate checks itself: a history row, `wear.span` and `match`'s
+/// geometry options echoed 1e300 and 1e-300 as hundreds of digits.
+#[test]
+fn history_rows_wear_span_and_match_options_echo_numbers_as_written() {
+    let history = case_with(
+        "written-history",
+        &GOOD.replace("[cycle]", "[history]\nfile = \"p.csv\"\n[cycle]"),
+        Some("normal,shear,bulk\n1e300,0,0\n"),
+    );
+    let wear = case_with(
+        "written-wear",
+        &format!(
+            "{GOOD}[history]\nkind = \"sliding\"\nnormal = 1000.0\namplitude = 0.02\nsteps_per_half = 4\nramp_steps = 4\n\
+             [wear]\nlaw = \"archard\"\ncoefficient = 3e-8\ncycles = 10\nspan = 1e300\n"
+        ),
+        None,
+    );
+    let prototype = case_with("written-match", GOOD, None);
+    let test = prototype.with_file_name("test.toml");
+    let runs: [(Vec<&str>, &str); 3] = [
+        (vec!["march", history.to_str().unwrap()], "normal = 1e300:"),
+        (vec!["wear", wear.to_str().unwrap()], "wear.span = 1e300:"),
+        (
+            vec![
+                "match",
+                prototype.to_str().unwrap(),
+                "--profile",
+                "hertz",
+                "--radius",
+                "1e-300",
+                "-o",
+                test.to_str().unwrap(),
+            ],
+            "--radius = 1e-300:",
+        ),
+    ];
+    for (args, expected) in runs {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("00000000"), "{args:?}: {}", stderr(&o));
+    }
+}
+
+/// Negative values past the input range reach the case crate's own sign checks, which echoed
+/// -1e300 as hundreds of digits: history.amplitude, wear.loop_datum, crack.lengths and plot's
+/// --normal.
+#[test]
+fn sign_checks_echo_numbers_as_written() {
+    let wear = |name: &str, amplitude: &str, datum: &str| {
+        case_with(
+            name,
+            &format!(
+                "{GOOD}[history]\nkind = \"sliding\"\nnormal = 1000.0\namplitude = {amplitude}\n\
+                 steps_per_half = 4\nramp_steps = 4\n\
+                 [wear]\nlaw = \"archard\"\ncoefficient = 3e-8\ncycles = 10\nloop_datum = {datum}\n"
+            ),
+            None,
+        )
+    };
+    let amplitude = wear("written-amplitude", "-1e300", "0.5");
+    let datum = wear("written-datum", "0.02", "-1e300");
+    let crack_text = std::fs::read_to_string(example("crack.toml")).unwrap();
+    let crack = case_with(
+        "written-crack",
+        &crack_text.replace(
+            "lengths = { from = 0.002, to = 0.3, count = 20 }",
+            "lengths = { from = -1e300, to = 0.3, count = 20 }",
+        ),
+        None,
+    );
+    let png = crack.with_file_name("slip-map.png");
+    let hertz = example("hertz.toml");
+    let runs: [(Vec<&str>, &str); 4] = [
+        (
+            vec!["wear", amplitude.to_str().unwrap()],
+            "history.amplitude = -1e300:",
+        ),
+        (
+            vec!["wear", datum.to_str().unwrap()],
+            "wear.loop_datum = -1e300:",
+        ),
+        (vec!["crack", crack.to_str().unwrap()], "from = -1e300,"),
+        (
+            vec![
+                "plot",
+                "slip-map",
+                &hertz,
+                "--normal=-1e300",
+                "-o",
+                png.to_str().unwrap(),
+            ],
+            "--normal = -1e300:",
+        ),
+    ];
+    for (args, expected) in runs {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("00000000"), "{args:?}: {}", stderr(&o));
+    }
+}

@@ -117,6 +117,7 @@ fn bad_histories_and_solver_settings_are_clear_errors() {
         ("slides", file.into(), Some("normal,shear,bulk\n1000,0,0\n1000,300,0\n1000,650,0\n"), &["step 3", "slides"]),
         ("missing-file", "[history]\nfile = \"absent.csv\"\n".into(), None, &["history.file", "absent.csv"]),
         ("kind", "[history]\nkind = \"sawtooth\"\n".into(), None, &["history.kind", "\"cycle\""]),
+        ("no-kind", "[history]\ncycles = 2\n".into(), None, &["missing field history.kind", "\"sliding\""]),
         ("cycle-without-points", "[history]\nkind = \"cycle\"\ncycles = 2\nsteps_per_half = 10\n".into(), None, &["[cycle]"]),
         ("harmonic-p", "[history]\nkind = \"harmonic\"\ncycles = 1\nsteps_per_cycle = 10\nnormal = { mean = 100.0, amplitude = 200.0 }\n".into(), None, &["history.normal.amplitude", "P stays > 0"]),
     ];

@@ -398,6 +398,67 @@ fn too_many_profile_rows_are_a_clear_error() {
     assert_clear_error("rows", &o, &["profile.file", "1000000"]);
 }
 
+/// A file that is not a table (a binary file, or /dev/zero, with no line ends) is rejected at
+/// its first overlong line: the reader held the whole line, growing without bound on an endless
+/// file, and echoed all of it in the message.
+#[test]
+fn an_overlong_line_is_a_clear_error_not_unbounded_memory() {
+    let line = "0".repeat(2 << 20);
+    let path = tabulated_case("long-line", format!("x,g\n{line}").as_bytes(), b"", "\n");
+    let o = run(&["steady", path.to_str().unwrap()]);
+    assert_clear_error("line", &o, &["profile.file", "line 2", "longer than"]);
+    assert!(
+        stderr(&o).len() < 2000,
+        "the message is short: {}",
+        stderr(&o).len()
+    );
+}
+
+/// The same for a sweep's output read by `plot design-map`.
+#[test]
+fn an_overlong_line_in_a_sweep_output_is_a_clear_error() {
+    let dir = scratch("long-sweep-line");
+    let table = dir.join("sweep.csv");
+    std::fs::write(&table, format!("a,b,regime\n{}", "0".repeat(2 << 20))).unwrap();
+    let png = dir.join("map.png");
+    let o = run(&[
+        "plot",
+        "design-map",
+        table.to_str().unwrap(),
+        "--x",
+        "a",
+        "--y",
+        "b",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_clear_error("sweep line", &o, &["sweep.csv", "line 2", "longer than"]);
+}
+
+/// A case file or sweep spec that is not text (a binary file, /dev/zero) is rejected at its
+/// first NUL byte, which TOML never allows: the whole file was read first, without bound on an
+/// endless one.
+#[test]
+fn a_binary_case_file_or_spec_is_a_clear_error() {
+    let dir = scratch("binary-case");
+    let binary = dir.join("case.toml");
+    std::fs::write(&binary, b"[material]\n\0\x01\x02").unwrap();
+    let binary = binary.to_str().unwrap();
+    let out = dir.join("out.csv");
+    let mut runs = vec![
+        vec!["steady", binary],
+        vec!["sweep", binary, "-o", out.to_str().unwrap()],
+    ];
+    if cfg!(target_os = "linux") {
+        runs.push(vec!["steady", "/dev/zero"]);
+        runs.push(vec!["sweep", "/dev/zero", "-o", out.to_str().unwrap()]);
+    }
+    for args in runs {
+        let o = run(&args);
+        assert_clear_error(&args.join(" "), &o, &["not a text file", args[1]]);
+    }
+}
+
 #[test]
 fn the_march_summary_lists_every_increment_of_a_long_history() {
     // The summary used to search the list of rows once per row (100,000 increments: 68 s in

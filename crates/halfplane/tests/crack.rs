@@ -728,3 +728,18 @@ mod graded {
         }
     }
 }
+
+/// A length the crack rejects is one its message calls invalid: 1e-30 (the input range's lower
+/// end, > 0) was refused with "must be a crack length > 0".
+#[test]
+fn crack_lengths_follow_the_input_range_the_message_states() {
+    assert!(Crack::new(0.0, 0.0, 1e-30).is_ok());
+    assert!(Crack::new(0.0, 0.0, 1e30).is_ok());
+    for bad in [0.0, -1.0, 9e-31, 1.1e30, f64::NAN, f64::INFINITY] {
+        let e = Crack::new(0.0, 0.0, bad).unwrap_err().to_string();
+        assert!(
+            e.contains("crack.lengths") && e.contains("1e-30 to 1e30"),
+            "{bad}: {e}"
+        );
+    }
+}

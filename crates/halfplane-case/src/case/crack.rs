@@ -7,6 +7,7 @@ use halfplane::crack::{
     CrackOptions, EffectiveRange, Position, CRITICAL_PLANE_PARAMETERS, MAX_POINTS, MIN_POINTS,
 };
 use halfplane::fatigue::Parameter;
+use halfplane::written::Written;
 use toml::Value;
 
 /// Most lengths of a `{ from, to, count }` range.
@@ -126,7 +127,11 @@ fn lengths(v: Option<&Value>) -> Result<Vec<f64>> {
                 .map_err(|e| anyhow!("crack.lengths.count: {e}"))?;
             let count = count_in(&raw, "crack.lengths.count", 2, MAX_COUNT)?;
             if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from) {
-                bail!("invalid crack.lengths = {{ from = {from}, to = {to} }}: must have 0 < from < to");
+                bail!(
+                    "invalid crack.lengths = {{ from = {}, to = {} }}: must have 0 < from < to",
+                    Written(from),
+                    Written(to)
+                );
             }
             let ratio = (to / from).powf(1.0 / (count - 1) as f64);
             Ok((0..count)

@@ -175,7 +175,14 @@ struct LineEnds<R> {
     ends: VecDeque<u64>,
     /// '\n's counted so far.
     counted: usize,
+    /// Offset of the first byte after the last '\n' passed on.
+    line_start: u64,
 }
+
+/// The longest line a table may have: a row is a few numbers, so a longer line means the file is
+/// not a table (a binary file, or an endless one with no line ends, which the CSV reader would
+/// otherwise hold whole in memory).
+const MAX_LINE_BYTES: u64 = 1 << 20;
 
 impl<R> LineEnds<R> {
     fn new(inner: R) -> Self {
@@ -184,6 +191,7 @@ impl<R> LineEnds<R> {
             offset: 0,
             ends: VecDeque::new(),
             counted: 0,
+            line_start: 0,
         }
     }
 
@@ -216,6 +224,18 @@ impl<R: Read> Read for LineEnds<R> {
                 .map(|(i, _)| start + i as u64),
         );
         self.offset += n as u64;
+        if let Some(&last) = self.ends.back() {
+            self.line_start = self.line_start.max(last + 1);
+        }
+        if self.offset - self.line_start > MAX_LINE_BYTES {
+            let line = self.counted + self.ends.len() + 1;
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!(
+                    "line {line} is longer than {MAX_LINE_BYTES} bytes: not a table of numbers"
+                ),
+            ));
+        }
         Ok(n)
     }
 }

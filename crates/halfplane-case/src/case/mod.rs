@@ -4,8 +4,10 @@
 use anyhow::{anyhow, bail, Context, Result};
 use halfplane::history::{Harmonic, History, Ramp, Steady};
 use halfplane::march::MarchOptions;
+use halfplane::written::Written;
 use halfplane::{Contact, Cycle, Friction, LoadPoint, Material, Profile};
 use serde::Deserialize;
+use std::io::Read;
 use std::path::Path;
 
 mod count;
@@ -407,10 +409,42 @@ fn required(value: Option<f64>, field: &str, what: &str) -> Result<f64> {
     })
 }
 
+/// The largest case file or sweep spec read: room for an inline history of
+/// [`halfplane::history::MAX_INCREMENTS`] rows.
+pub const MAX_TEXT_BYTES: u64 = 1 << 30;
+
+/// Reads the text of a case file or sweep spec (`what`, for messages), refusing at the first NUL
+/// byte, which TOML never allows: a binary file, or an endless one like /dev/zero, is not read whole.
+pub fn read_text(path: &Path, what: &str) -> Result<String> {
+    let context = || format!("cannot read {what} {}", path.display());
+    let file = std::fs::File::open(path).with_context(context)?;
+    let mut reader = file.take(MAX_TEXT_BYTES + 1);
+    let (mut bytes, mut chunk) = (Vec::new(), vec![0u8; 1 << 16]);
+    loop {
+        let n = match reader.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e).with_context(context),
+        };
+        if let Some(at) = chunk[..n].iter().position(|&b| b == 0) {
+            bail!(
+                "{}: not a text file (a NUL byte at byte {})",
+                context(),
+                bytes.len() + at
+            );
+        }
+        bytes.extend_from_slice(&chunk[..n]);
+    }
+    if bytes.len() as u64 > MAX_TEXT_BYTES {
+        bail!("{}: larger than {MAX_TEXT_BYTES} bytes", context());
+    }
+    String::from_utf8(bytes).map_err(|e| anyhow!("{}: not UTF-8 text ({e})", context()))
+}
+
 /// Reads and resolves a case file.
 pub fn load(path: &Path) -> Result<Case> {
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read case file {}", path.display()))?;
+    let text = read_text(path, "case file")?;
     // An editor on Windows may save UTF-8 with a byte-order mark, which TOML does not allow.
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
@@ -577,7 +611,10 @@ fn resolve_sliding(h: RawHistory) -> Result<Sliding> {
         anyhow!("missing field history.amplitude: give the distance the bodies slide each way once Q reaches f P (> 0, mm)")
     })?;
     if !(amplitude.is_finite() && amplitude > 0.0) {
-        bail!("invalid history.amplitude = {amplitude}: must be a finite sliding displacement > 0 (mm)");
+        bail!(
+            "invalid history.amplitude = {}: must be a finite sliding displacement > 0 (mm)",
+            Written(amplitude)
+        );
     }
     let steps_per_half = match &h.steps_per_half {
         Some(v) => count_in(v, "history.steps_per_half", 1, max)?,
@@ -609,7 +646,7 @@ fn resolve_history(
     let kind = match (&h.kind, h.file.is_some() || h.data.is_some()) {
         (Some(k), _) => k.clone(),
         (None, true) => "file".to_string(),
-        (None, false) => bail!("missing field history.kind: give \"file\" (with file = ... or data = ...), \"cycle\" or \"harmonic\""),
+        (None, false) => bail!("missing field history.kind: give \"file\" (with file = ... or data = ...), \"cycle\", \"harmonic\" or \"sliding\" (wear only)"),
     };
     let used: &[&str] = match kind.as_str() {
         "file" => &["file", "data"],

@@ -6,6 +6,7 @@
 use super::csv::{read_csv, read_csv_with, Table};
 use anyhow::{anyhow, bail, Result};
 use halfplane::history::History;
+use halfplane::written::Written;
 use halfplane::Profile;
 use std::path::Path;
 
@@ -62,7 +63,10 @@ pub(super) fn history_rows(table: &Table) -> Result<History> {
             ..
         } => {
             let line = lines.get(row.wrapping_sub(1)).copied().unwrap_or(0);
-            anyhow!("{table}, line {line}: {column} = {value}: must be {valid}")
+            anyhow!(
+                "{table}, line {line}: {column} = {}: must be {valid}",
+                Written(value)
+            )
         }
         other => anyhow!("{table}: {other}"),
     })

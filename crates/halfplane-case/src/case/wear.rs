@@ -7,6 +7,7 @@ use super::FatigueSettings;
 use anyhow::{anyhow, bail, Result};
 use halfplane::fatigue::{self, FatigueConstants, FatigueGrid, FatigueResult};
 use halfplane::wear::{Checkpoint, Law, WearOptions, MAX_CHECKPOINTS, MAX_CYCLES};
+use halfplane::written::Written;
 use halfplane::Material;
 use toml::Value;
 
@@ -173,11 +174,11 @@ pub(super) fn resolve(table: Option<&toml::Table>) -> Result<WearSettings> {
     }
     let span = number(table, "span")?.unwrap_or(DEFAULT_SPAN);
     if !(span.is_finite() && (1.0..=100.0).contains(&span)) {
-        bail!("invalid wear.span = {span}: must be a factor from 1 to 100 (the grid's width over the unworn contact's)");
+        bail!("invalid wear.span = {}: must be a factor from 1 to 100 (the grid's width over the unworn contact's)", Written(span));
     }
     let loop_datum = number(table, "loop_datum")?;
     if let Some(d) = loop_datum.filter(|d| !(d.is_finite() && *d > 0.0)) {
-        bail!("invalid wear.loop_datum = {d}: must be a length > 0 (the distance from the contact at which the fretting loop's displacement is measured)");
+        bail!("invalid wear.loop_datum = {}: must be a length > 0 (the distance from the contact at which the fretting loop's displacement is measured)", Written(d));
     }
     Ok(WearSettings {
         options,

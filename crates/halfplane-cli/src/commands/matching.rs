@@ -12,8 +12,7 @@ use halfplane_case::report::matching::MatchReportOut;
 /// the prototype's material and friction where they are not given.
 pub fn resolve(args: &MatchArgs) -> Result<MatchConfig> {
     let prototype = crate::case::load(&args.case)?;
-    let text = std::fs::read_to_string(&args.case)
-        .with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text = halfplane_case::case::read_text(&args.case, "case file")?;
     MatchConfig::from_case(
         prototype,
         &text,

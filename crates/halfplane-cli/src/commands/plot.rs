@@ -11,6 +11,7 @@ use halfplane::history::History;
 use halfplane::march::{self, MarchOptions};
 use halfplane::matching::Mode;
 use halfplane::wear::Checkpoint;
+use halfplane::written::Written;
 use halfplane::{stress, Contact, Cycle};
 use halfplane_plot::{CheckpointQuantity, FieldRecorder, GridMap, MarchedCycle, SlipMap, Units};
 use std::path::PathBuf;
@@ -142,7 +143,10 @@ impl PlotConfig {
                         .map_or(1000.0, |c| c.low().normal().min(c.high().normal()))
                 });
                 if !(p1.is_finite() && p1 > 0.0) {
-                    bail!("invalid --normal = {p1}: must be a finite number > 0");
+                    bail!(
+                        "invalid --normal = {}: must be a finite number > 0",
+                        Written(p1)
+                    );
                 }
                 let map = SlipMap {
                     normal: p1,

@@ -85,8 +85,7 @@ fn output_format(path: &Path) -> Result<OutputFormat> {
 
 /// Reads a spec file and resolves its case.
 pub fn load(path: &Path) -> Result<(Spec, Template)> {
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read sweep spec {}", path.display()))?;
+    let text = halfplane_case::case::read_text(path, "sweep spec")?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let resolve = || -> Result<(Spec, Template)> {

@@ -50,8 +50,8 @@ pub struct Crack {
 
 impl Crack {
     /// The crack from `(mouth, 0)` at `angle` radians from the surface normal (strictly between
-    /// -pi/2 and pi/2), of `length > 0`. Errors name `crack.position`, `crack.angle` (in degrees)
-    /// or `crack.lengths`.
+    /// -pi/2 and pi/2), of `length` from 1e-30 to 1e30. Errors name `crack.position`,
+    /// `crack.angle` (in degrees) or `crack.lengths`.
     pub fn new(mouth: f64, angle: f64, length: f64) -> Result<Self> {
         physical("crack.position", mouth)?;
         let degrees = angle.to_degrees();
@@ -62,11 +62,11 @@ impl Crack {
                 valid: "an angle in degrees strictly between -90 and 90 (from the surface normal)",
             });
         }
-        if !(length.is_finite() && length > 1e-30 && length <= 1e30) {
+        if !(length.is_finite() && (1e-30..=1e30).contains(&length)) {
             return Err(Error::InvalidInput {
                 field: "crack.lengths".into(),
                 value: length,
-                valid: "a crack length > 0 (and at most 1e30)",
+                valid: "a crack length from 1e-30 to 1e30",
             });
         }
         Ok(Self {
