@@ -389,3 +389,22 @@ fn relative_displacement_is_cattaneo_mindlins_at_the_stated_datum() {
         assert_eq!(cell, *d);
     }
 }
+
+#[test]
+fn a_moment_arm_beyond_the_resolvable_exits_2_naming_the_row() {
+    // M/P = 1e27 mm moves a Hertz contact of 0.76 mm where its ends and the grid's cells are the
+    // same double: the march printed a grid "over [-1e27, 1e27] mm, cell width 0" and no energy.
+    let case = case_with(
+        "far-moment",
+        "[history]\nkind = \"harmonic\"\nnormal = { mean = 1000.0, amplitude = 0.0 }\nshear = { mean = 0.0, amplitude = 300.0 }\nmoment = { mean = 1e30, amplitude = 0.0 }\ncycles = 1\nsteps_per_cycle = 20\n",
+        None,
+    );
+    let o = run(&["march", case.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(o.stdout.is_empty(), "no result printed");
+    let e = stderr(&o);
+    assert!(
+        e.contains("history row 1.moment") && e.contains("1e5 contact half-widths"),
+        "{e}"
+    );
+}

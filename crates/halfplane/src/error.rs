@@ -426,10 +426,20 @@ pub enum Error {
 }
 
 impl Error {
-    /// The same error, a [`Error::MomentOutsideTable`] naming the moment `field` (for example
-    /// `cycle.point1.moment`) instead of the library's plain `moment`; other errors unchanged.
+    /// The same error naming the moment `field` (for example `cycle.point1.moment`) instead of
+    /// the library's plain `moment`: a [`Error::MomentOutsideTable`], or an
+    /// [`Error::InvalidInput`] whose field is `moment`; other errors unchanged.
     pub fn with_moment_field(self, field: &str) -> Self {
         match self {
+            Error::InvalidInput {
+                field: named,
+                value,
+                valid,
+            } if named == "moment" => Error::InvalidInput {
+                field: field.into(),
+                value,
+                valid,
+            },
             Error::MomentOutsideTable {
                 value,
                 normal,

@@ -348,6 +348,7 @@ impl Contact {
         let a = self.half_width(normal)?;
         let k_n = self.normal_intensity(a)?;
         let e = moment / normal;
+        resolvable(moment, e, a)?;
         Ok(Some(NormalContact {
             normal,
             moment,
@@ -478,6 +479,7 @@ impl Contact {
                 valid: "a moment whose contact has a non-negative pressure intensity K_N at both ends (the profile is not convex there)",
             });
         }
+        resolvable(moment, c, a)?;
         let ends = PerEdge {
             left: c - a,
             right: c + a,
@@ -760,4 +762,23 @@ impl Contact {
         };
         Ok([pinned(1.0)?, pinned(-1.0)?])
     }
+}
+
+/// The most half-widths a contact's centre may lie from x = 0: farther, its ends `c -+ a` keep
+/// fewer than about 1e-11 of their value for the contact itself (and a march grid's cells, whose
+/// positions are c plus fractions of a, fewer still), so results would be lost to rounding.
+const MAX_ARM: f64 = 1e5;
+
+/// Refuses a contact of centre `c` and half-width `a` whose centre lies more than [`MAX_ARM`]
+/// half-widths from x = 0 (a moment arm M/P far beyond the contact: Hertz's contact moves by
+/// M/P whatever its size). The error names `moment` ([`Error::with_moment_field`] renames it).
+fn resolvable(moment: f64, c: f64, a: f64) -> Result<()> {
+    if c.abs() > MAX_ARM * a {
+        return Err(Error::InvalidInput {
+            field: "moment".into(),
+            value: moment,
+            valid: "a moment whose contact lies within 1e5 contact half-widths of x = 0 (|M/P| for Hertz): farther, the contact's ends are lost to rounding",
+        });
+    }
+    Ok(())
 }

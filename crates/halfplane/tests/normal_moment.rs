@@ -454,3 +454,28 @@ fn the_pressure_one_rounding_step_off_a_kink_is_finite() {
         assert!(rel(p, at_kink) < 1e-12, "p(-{x}) = {p} vs {at_kink}");
     }
 }
+
+#[test]
+fn a_moment_arm_beyond_the_resolvable_is_refused_naming_the_moment() {
+    // Hertz moves its contact by M/P however far: at M/P = 1e27 mm (P = 1000, M = 1e30) a
+    // 0.76 mm contact's ends are the same double. Refused beyond 1e5 half-widths, named through
+    // `with_moment_field`; just inside it the contact is still Hertz's, shifted.
+    let contact = contact(Profile::hertz(50.0).unwrap());
+    let a = contact.half_width(1000.0).unwrap();
+    let err = contact.normal_contact(1000.0, 1e30).unwrap_err();
+    assert!(
+        matches!(&err, Error::InvalidInput { field, .. } if field == "moment"),
+        "{err}"
+    );
+    let renamed = err.with_moment_field("cycle.point1.moment");
+    assert!(
+        renamed.to_string().contains("cycle.point1.moment = 1e30"),
+        "{renamed}"
+    );
+    let inside = contact.normal_contact(1000.0, 0.99e5 * a * 1000.0).unwrap();
+    assert!(
+        (inside.half_width() - a).abs() < 1e-6 * a,
+        "Hertz's half-width {a} at 0.99e5 half-widths' arm: {}",
+        inside.half_width()
+    );
+}
