@@ -355,27 +355,15 @@ fn root_antiderivative(v: f64, d: f64, scale: f64, k: usize) -> f64 {
 mod tests {
     use super::*;
 
-    /// Whether `G - shift I` is positive definite (its Cholesky factorisation succeeds).
+    /// Whether `G - shift I` is positive definite: the dense route's Cholesky factorisation
+    /// (`solve.rs`) succeeds on it.
     fn positive_definite_after(row: &[f64], shift: f64) -> bool {
         let n = row.len();
-        let mut l = vec![0.0; n * n];
-        for i in 0..n {
-            for j in 0..=i {
-                let mut sum = row[i - j] - if i == j { shift } else { 0.0 };
-                for k in 0..j {
-                    sum -= l[i * n + k] * l[j * n + k];
-                }
-                if i == j {
-                    if sum <= 0.0 {
-                        return false;
-                    }
-                    l[i * n + i] = sum.sqrt();
-                } else {
-                    l[i * n + j] = sum / l[j * n + j];
-                }
-            }
-        }
-        true
+        let g: Vec<f64> = (0..n * n)
+            .map(|k| row[(k / n).abs_diff(k % n)] - if k / n == k % n { shift } else { 0.0 })
+            .collect();
+        let mut z = vec![0.0; n];
+        super::super::solve::dense_stick_solve(&g, &vec![true; n], &vec![1.0; n], &mut z, 0).is_ok()
     }
 
     #[test]

@@ -269,7 +269,13 @@ pub(super) fn apply(kernel: &mut Toeplitz, dense: &Option<Vec<f64>>, v: &[f64], 
 }
 
 /// Cholesky solve of `G_SS z = b` over all stick cells (the dense route).
-fn dense_stick_solve(g: &[f64], set: &[bool], b: &[f64], z: &mut [f64], step: usize) -> Result<()> {
+pub(super) fn dense_stick_solve(
+    g: &[f64],
+    set: &[bool],
+    b: &[f64],
+    z: &mut [f64],
+    step: usize,
+) -> Result<()> {
     let n_all = set.len();
     let s: Vec<usize> = (0..n_all).filter(|&i| set[i]).collect();
     let n = s.len();
