@@ -86,7 +86,7 @@ fn read_lines(
         .flexible(true)
         .terminator(csv::Terminator::Any(b'\n'))
         .quoting(false)
-        .from_reader(LineEnds::new(reader));
+        .from_reader(LineEnds::new(LineLimit::new(reader, "a table of numbers")));
     let (mut values, mut numbers) = (Vec::new(), Vec::new());
     let mut header_seen = false;
     let mut record = csv::ByteRecord::new();
@@ -175,14 +175,7 @@ struct LineEnds<R> {
     ends: VecDeque<u64>,
     /// '\n's counted so far.
     counted: usize,
-    /// Offset of the first byte after the last '\n' passed on.
-    line_start: u64,
 }
-
-/// The longest line a table may have: a row is a few numbers, so a longer line means the file is
-/// not a table (a binary file, or an endless one with no line ends, which the CSV reader would
-/// otherwise hold whole in memory).
-const MAX_LINE_BYTES: u64 = 1 << 20;
 
 impl<R> LineEnds<R> {
     fn new(inner: R) -> Self {
@@ -191,7 +184,6 @@ impl<R> LineEnds<R> {
             offset: 0,
             ends: VecDeque::new(),
             counted: 0,
-            line_start: 0,
         }
     }
 
@@ -224,15 +216,56 @@ impl<R: Read> Read for LineEnds<R> {
                 .map(|(i, _)| start + i as u64),
         );
         self.offset += n as u64;
-        if let Some(&last) = self.ends.back() {
-            self.line_start = self.line_start.max(last + 1);
+        Ok(n)
+    }
+}
+
+/// The longest line read from a table: a row is a few numbers (a sweep's output, some 100 and a
+/// message), so a longer line means the file is not a table (a binary file, or an endless one with
+/// no line ends, which the CSV reader would otherwise hold whole in memory).
+pub const MAX_LINE_BYTES: u64 = 1 << 20;
+
+/// A reader that fails on a line longer than [`MAX_LINE_BYTES`], naming the line and saying
+/// what the file is not (`not`, e.g. "a table of numbers").
+pub struct LineLimit<R> {
+    inner: R,
+    not: &'static str,
+    /// Line ends passed on so far.
+    lines: usize,
+    /// Bytes passed on since the last line end.
+    since_end: u64,
+}
+
+impl<R> LineLimit<R> {
+    /// `inner`, read a line of at most [`MAX_LINE_BYTES`] at a time.
+    pub fn new(inner: R, not: &'static str) -> Self {
+        Self {
+            inner,
+            not,
+            lines: 0,
+            since_end: 0,
         }
-        if self.offset - self.line_start > MAX_LINE_BYTES {
-            let line = self.counted + self.ends.len() + 1;
+    }
+}
+
+impl<R: Read> Read for LineLimit<R> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        let read = &buf[..n];
+        match read.iter().rposition(|&b| b == b'\n') {
+            Some(last) => {
+                self.lines += read.iter().filter(|&&b| b == b'\n').count();
+                self.since_end = (n - last - 1) as u64;
+            }
+            None => self.since_end += n as u64,
+        }
+        if self.since_end > MAX_LINE_BYTES {
             return Err(io::Error::new(
                 io::ErrorKind::InvalidData,
                 format!(
-                    "line {line} is longer than {MAX_LINE_BYTES} bytes: not a table of numbers"
+                    "line {} is longer than {MAX_LINE_BYTES} bytes: not {}",
+                    self.lines + 1,
+                    self.not
                 ),
             ));
         }

@@ -18,7 +18,7 @@ mod table;
 mod wear;
 
 use count::{count_in, RawCount};
-pub use csv::{read_csv, read_csv_with, Table};
+pub use csv::{read_csv, read_csv_with, LineLimit, Table, MAX_LINE_BYTES};
 pub use fatigue::FatigueSettings;
 pub use wear::{Reached, WearFatigue, WearSettings, DEFAULT_SPAN};
 

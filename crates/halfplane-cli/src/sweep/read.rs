@@ -3,6 +3,7 @@
 //! with the `parquet` feature.
 
 use anyhow::{anyhow, bail, Context, Result};
+use halfplane_case::case::LineLimit;
 use std::path::Path;
 
 /// A column's values: numbers (absent where the cell is empty or null) or text.
@@ -75,7 +76,7 @@ fn csv(path: &Path, wanted: &[&str]) -> Result<SweepTable> {
         std::fs::File::open(path).with_context(|| format!("cannot read {}", path.display()))?;
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(true)
-        .from_reader(LineLimit::new(file));
+        .from_reader(LineLimit::new(file, "a sweep's output"));
     let names: Vec<String> = reader
         .headers()
         .with_context(|| format!("cannot read the header of {}", path.display()))?
@@ -202,52 +203,4 @@ fn parquet(path: &Path, wanted: &[&str]) -> Result<SweepTable> {
         columns,
         rows,
     })
-}
-
-/// The longest line read from a sweep's output: a row is some 100 numbers and a message, so a
-/// longer line means the file is not one (a binary file, or an endless one with no line ends,
-/// which the CSV reader would otherwise hold whole in memory).
-const MAX_LINE_BYTES: u64 = 1 << 20;
-
-/// A reader that fails on a line longer than [`MAX_LINE_BYTES`], naming the line.
-struct LineLimit<R> {
-    inner: R,
-    /// Line ends passed on so far.
-    lines: usize,
-    /// Bytes passed on since the last line end.
-    since_end: u64,
-}
-
-impl<R> LineLimit<R> {
-    fn new(inner: R) -> Self {
-        Self {
-            inner,
-            lines: 0,
-            since_end: 0,
-        }
-    }
-}
-
-impl<R: std::io::Read> std::io::Read for LineLimit<R> {
-    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
-        let n = self.inner.read(buf)?;
-        let read = &buf[..n];
-        match read.iter().rposition(|&b| b == b'\n') {
-            Some(last) => {
-                self.lines += read.iter().filter(|&&b| b == b'\n').count();
-                self.since_end = (n - last - 1) as u64;
-            }
-            None => self.since_end += n as u64,
-        }
-        if self.since_end > MAX_LINE_BYTES {
-            return Err(std::io::Error::new(
-                std::io::ErrorKind::InvalidData,
-                format!(
-                    "line {} is longer than {MAX_LINE_BYTES} bytes: not a sweep's output",
-                    self.lines + 1
-                ),
-            ));
-        }
-        Ok(n)
-    }
 }
