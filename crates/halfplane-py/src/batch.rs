@@ -33,8 +33,8 @@ fn numeric_columns() -> impl Iterator<Item = &'static str> {
 /// How many numeric input columns there are.
 const NUMERIC_COUNT: usize = STEADY_INPUT_COLUMNS.len() - 1;
 
-/// Regime codes, the `STEADY_NUMBERS` numbers of `STEADY_COLUMNS` as one (8, rows) array (a column per
-/// row of it), the failed rows, in order, and their messages.
+/// Regime codes, the numbers of `STEADY_COLUMNS` as one (`STEADY_NUMBERS`, rows) array (a column
+/// per row of it), the failed rows, in order, and their messages.
 type Output<'py> = (
     Bound<'py, PyArray1<i8>>,
     Bound<'py, PyArray2<f64>>,

@@ -348,15 +348,13 @@ impl MarchResult {
             .iter()
             .map(|s| 0.5 * (s.ends.right - s.ends.left))
             .fold(0.0, f64::max);
+        if largest > 0.0 {
+            return 10.0 * largest;
+        }
         // Nothing touched: no shear, so every displacement is zero whatever the (positive) datum.
-        let span = match (self.x.first(), self.x.last()) {
+        match (self.x.first(), self.x.last()) {
             (Some(a), Some(b)) if b > a => b - a,
             _ => 1.0,
-        };
-        if largest > 0.0 {
-            10.0 * largest
-        } else {
-            span
         }
     }
 
