@@ -76,6 +76,33 @@ fn traction_at(
     (r, q)
 }
 
+/// One increment from Q = 0 to 0.5 f P moves each stick-slip boundary by a fifth of the contact:
+/// the plain active set took one pass more per doubling of the cells (8 at 400, 14 at 25,600),
+/// the extrapolated ends (`march/predict.rs`) at most 6 from 100 to 204,800 cells. The answer is
+/// still the one complementarity fixes: the boundary within a cell of Cattaneo-Mindlin's.
+#[test]
+fn a_boundary_moved_by_many_cells_in_one_increment_takes_a_bounded_number_of_passes() {
+    let c = contact(Profile::hertz(RADIUS).unwrap());
+    let rows = [[1000.0, 0.0, 0.0], [1000.0, 300.0, 0.0]];
+    for cells in [400, 1600, 6400, 25600] {
+        let (r, _) = traction_at(&c, &rows, cells, 2);
+        let last = r.steps.last().unwrap();
+        let exact_c =
+            closed_form::cattaneo_mindlin_stick_half_width(last.half_width, 0.6, 1000.0, 300.0);
+        let [l, rr] = last.largest_stick().unwrap();
+        let w = r.x[1] - r.x[0];
+        assert!(
+            last.passes <= 6,
+            "{cells} cells: {} active-set passes for one Cattaneo increment (extrapolated stick ends: at most 6)",
+            last.passes
+        );
+        assert!(
+            (rr - exact_c).abs() <= w && (l + exact_c).abs() <= w,
+            "{cells} cells: Cattaneo stick boundary [{l}, {rr}] more than a cell from +-{exact_c}"
+        );
+    }
+}
+
 #[test]
 fn cattaneo_mindlin_loading() {
     let c = contact(Profile::hertz(RADIUS).unwrap());

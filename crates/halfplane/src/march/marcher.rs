@@ -12,6 +12,7 @@ use super::evaluate::EndSolution;
 use super::kernel;
 use super::layout::Layout;
 use super::moments::PressureShape;
+use super::predict::StickEnds;
 use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, RelativeDisplacement, StepReport};
@@ -423,6 +424,7 @@ impl Marcher {
         let mut passes = 0;
         let mut shift;
         let (mut restarts, mut forced) = (0, None);
+        let mut ends = StickEnds::default();
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
@@ -527,6 +529,13 @@ impl Marcher {
             }
             if !changed {
                 break;
+            }
+            // Flag at once the cells the stick run's ends are heading past (`predict.rs`).
+            for (cells, sign) in ends.record(&self.cells) {
+                for i in cells {
+                    self.flag_traction[i] = self.traction[i] + self.dq[i];
+                    self.cells[i] = Cell::Slip(sign);
+                }
             }
         }
         if let Some(i) = forced {

@@ -67,6 +67,7 @@ mod kernel;
 mod layout;
 mod marcher;
 mod moments;
+mod predict;
 mod solve;
 mod toeplitz;
 mod types;
