@@ -479,3 +479,23 @@ fn the_march_summary_lists_every_increment_of_a_long_history() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stdout(&o).lines().count() > 20_000);
 }
+
+/// An edge radius 1e12 times the flat: the contact is Hertz-like and 1e5 mm wide, its stick zone
+/// would leave it (as Hertz's does at such radii), and the stick-zone equations find no root.
+/// That is exit 2 with the number of iterations taken and the hint to march, not a bare failure.
+#[test]
+fn stick_zone_equations_without_a_root_point_to_the_march() {
+    let text = std::fs::read_to_string(example("flat-rounded.toml"))
+        .unwrap()
+        .replace("radius = 50.0", "radius = 1e12");
+    let case = write_case("no-root", &text);
+    let o = run(&["steady", case.to_str().unwrap()]);
+    assert_clear_error(
+        "steady, edge radius 1e12",
+        &o,
+        &[
+            "stick-zone equations did not converge in",
+            "halfplane march",
+        ],
+    );
+}

@@ -225,9 +225,7 @@ pub enum Error {
     },
 
     /// An iterative solve did not reach its tolerance.
-    #[error(
-        "{what} did not converge in {iterations} iterations (last relative step {last_step:e})"
-    )]
+    #[error("{what} did not converge {}", convergence_note(*.iterations, *.last_step))]
     NoConvergence {
         /// Which solve.
         what: &'static str,
@@ -544,5 +542,16 @@ pub(crate) fn finite(field: &str, value: f64) -> Result<f64> {
             value,
             valid: "a finite number",
         })
+    }
+}
+
+/// How a [`Error::NoConvergence`] ended, as its message gives it. The last step is infinite
+/// when no step was ever taken, because none reduced the residual.
+fn convergence_note(iterations: usize, last_step: f64) -> String {
+    let plural = if iterations == 1 { "" } else { "s" };
+    if last_step.is_finite() {
+        format!("in {iterations} iteration{plural} (last relative step {last_step:e})")
+    } else {
+        format!("in {iterations} iteration{plural} (no step reduced the residual)")
     }
 }

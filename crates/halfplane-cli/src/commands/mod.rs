@@ -71,8 +71,8 @@ pub fn hint(error: &anyhow::Error, command: &Command) -> Option<&'static str> {
         .find_map(|e| e.downcast_ref::<halfplane::Error>())?;
     match library.alternative()? {
         Alternative::March => Some(
-            "this cycle is outside the steady-state analysis; `halfplane march` (numerical time \
-             marching) has no such restriction: give the case a [history] section with \
+            "the steady-state analysis does not cover this cycle; `halfplane march` (numerical \
+             time marching) has no such restriction: give the case a [history] section with \
              kind = \"cycle\"",
         ),
         Alternative::OtherTest if exact => Some(

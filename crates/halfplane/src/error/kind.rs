@@ -143,11 +143,16 @@ impl Error {
     /// Another route of this library that may succeed where this one stopped, if there is one:
     /// [`Alternative::March`] for a cycle outside the steady-state analysis's assumptions (slip
     /// reversing inside a half, a stick zone outside the smaller contact: `docs/validity.md`),
-    /// [`Alternative::OtherTest`] when matching finds no valid test although the prototype is
-    /// valid. Gross sliding has none: the march slides too.
+    /// or the stick-zone equations finding no solution (as with an edge radius of 1e12 times the
+    /// flat, whose stick zone leaves the contact), [`Alternative::OtherTest`] when matching finds
+    /// no valid test although the prototype is valid. Gross sliding has none: the march slides
+    /// too.
     pub fn alternative(&self) -> Option<Alternative> {
         match self {
             Error::WearStopped { .. } => None,
+            Error::NoConvergence { what, .. } if *what == crate::steady::STICK_ZONE_EQUATIONS => {
+                Some(Alternative::March)
+            }
             Error::SlipReversesInHalf { .. } | Error::StickZoneOutsideContact { .. } => {
                 Some(Alternative::March)
             }

@@ -24,6 +24,10 @@ mod tests;
 mod validity;
 pub(crate) use path::SegmentPath;
 
+/// The name the stick-zone Newton iteration gives its [`Error::NoConvergence`]: the one failure to
+/// converge that the march may get past (`Error::alternative`).
+pub(crate) const STICK_ZONE_EQUATIONS: &str = "stick-zone equations";
+
 /// How the stick zone is found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[non_exhaustive]
@@ -521,8 +525,9 @@ pub(crate) fn stick_zone(
     let s2 = f * normal_sum;
     let norm = |r: [f64; 2]| ((r[0] / s1).powi(2) + (r[1] / s2).powi(2)).sqrt();
     let (mut r, mut jac) = residual(d, e)?;
-    let mut last_step = f64::INFINITY;
+    let (mut last_step, mut iterations) = (f64::INFINITY, 0);
     for iteration in 1..=options.max_iterations() {
+        iterations = iteration;
         let det = jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0];
         let step_d = -(jac[1][1] * r[0] - jac[0][1] * r[1]) / det;
         let step_e = -(-jac[1][0] * r[0] + jac[0][0] * r[1]) / det;
@@ -571,8 +576,8 @@ pub(crate) fn stick_zone(
         }
     }
     Err(Error::NoConvergence {
-        what: "stick-zone equations",
-        iterations: options.max_iterations(),
+        what: STICK_ZONE_EQUATIONS,
+        iterations,
         last_step,
     })
 }
