@@ -80,8 +80,7 @@ def steady(case: Case) -> SteadyResult:
     the cycle is outside the steady-state analysis (slip reversing inside a half, a stick zone
     outside the smaller contact): :func:`march` covers those. :class:`SolverError` when its
     stick-zone equations find no root (its message points to :func:`march` too). A missing
-    asymptotic estimate is a
-    :class:`HalfplaneWarning`, as the command's note on stderr.
+    asymptotic estimate is a :class:`HalfplaneWarning`, as the command's note on stderr.
     """
     report, note = _halfplane.steady_report(case)
     if note is not None:
