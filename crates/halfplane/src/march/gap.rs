@@ -2,7 +2,7 @@
 //! whose gap need not be smooth or convex, and whose contact may split): the pressure
 //! piecewise constant on the cells, by an active set on the contact cells.
 //!
-//! Conventions as the analytic normal problem's (`normal_moment.rs`): P > 0 compresses, the
+//! Conventions as the analytic normal problem's (`normal_moment/`): P > 0 compresses, the
 //! moment M of the pressure is taken about x = 0, the pad rotates freely by theta and the gap
 //! gains `theta x`. The surfaces' relative normal displacement under the pressure is
 //! `u(x) = -(A/pi) integral p(xi) ln|x - xi| dxi` (Johnson, *Contact Mechanics*, eq. 2.25a,
