@@ -4,7 +4,7 @@
 use crate::labels::{Edge, PerEdge};
 use std::f64::consts::PI;
 
-/// The solved normal contact under P and M. Built only by [`Contact::normal_contact`], so its
+/// The solved normal contact under P and M. Built only by [`Contact::normal_contact`](crate::Contact::normal_contact), so its
 /// ends, rotation and intensities always belong to its loads.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NormalContact {
