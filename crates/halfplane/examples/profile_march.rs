@@ -2,7 +2,8 @@
 //! `valgrind --tool=callgrind target/release/examples/profile_march CELLS [flat-rounded|cattaneo]`.
 //! Default: the reference cycle of examples/march-cycle.toml (Hertz, 30 ramp + 270 cycle
 //! increments); `flat-rounded`: the same cycle on b = 0.3, R = 50; `cattaneo`: Hertz, P = 1000
-//! pressed in one increment, then Q = 0.5 f P in one more (two increments). With `HP_SUB_CELL`
+//! pressed in one increment, then Q = 0.5 f P in one more (two increments; a third argument
+//! sets Q / f P, e.g. `profile_march 3200 cattaneo 0.97`). With `HP_SUB_CELL`
 //! set, the march locates its stick-slip boundaries inside their cells
 //! (`MarchOptions::with_sub_cell_boundaries`).
 use halfplane::history::{History, Ramp};
@@ -19,9 +20,13 @@ fn main() {
         Some("flat-rounded") => reference::flat_rounded(),
         _ => reference::hertz(),
     };
+    let ratio: f64 = std::env::args()
+        .nth(3)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0.5);
     let history = if mode.as_deref() == Some("cattaneo") {
         let f = contact.friction().value();
-        History::from_rows(&[[1000.0, 0.0, 0.0], [1000.0, 0.5 * f * 1000.0, 0.0]]).unwrap()
+        History::from_rows(&[[1000.0, 0.0, 0.0], [1000.0, ratio * f * 1000.0, 0.0]]).unwrap()
     } else {
         let (p1, p2) = (reference::point1(), reference::point2());
         History::in_phase(p1, p2, 3, 45, Ramp::NormalFirst, 15).unwrap()
@@ -56,7 +61,7 @@ fn main() {
         let (a, w) = (last.half_width, r.x[1] - r.x[0]);
         let f = contact.friction().value();
         let compliance = contact.compliance().value();
-        let c = closed_form::cattaneo_mindlin_stick_half_width(a, f, 1000.0, 0.5 * f * 1000.0);
+        let c = closed_form::cattaneo_mindlin_stick_half_width(a, f, 1000.0, ratio * f * 1000.0);
         let p = |b: f64, x: f64| closed_form::hertz_pressure(compliance, reference::RADIUS, b, x);
         let max =
             r.x.iter()

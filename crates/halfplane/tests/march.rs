@@ -81,7 +81,7 @@ fn traction_at(
 /// the extrapolated ends (`march/predict.rs`) at most 6 from 100 to 204,800 cells. The answer is
 /// still the one complementarity fixes: the boundary within a cell of Cattaneo-Mindlin's.
 #[test]
-fn a_boundary_moved_by_many_cells_in_one_increment_takes_a_bounded_number_of_passes() {
+fn a_boundary_moved_by_many_cells_in_one_increment_takes_at_most_six_passes() {
     let c = contact(Profile::hertz(RADIUS).unwrap());
     let rows = [[1000.0, 0.0, 0.0], [1000.0, 300.0, 0.0]];
     for cells in [400, 1600, 6400, 25600] {

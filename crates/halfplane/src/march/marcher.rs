@@ -424,7 +424,7 @@ impl Marcher {
         let mut passes = 0;
         let mut shift;
         let (mut restarts, mut forced) = (0, None);
-        let mut ends = StickEnds::default();
+        let mut ends = StickEnds::new(self.pressure == self.pressure_start);
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
