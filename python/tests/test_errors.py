@@ -41,9 +41,11 @@ def test_matching_errors_are_not_input_errors() -> None:
 
 
 def test_cycles_the_march_covers_point_to_it() -> None:
+    # The example NoConvergence is the stick-zone equations' (no root), which the march may get
+    # past; the other non-convergences carry no pointer (checked in the library's tests).
     hinted = {
         name
         for name, _, exception in _halfplane._error_examples()
         if "halfplane.march" in str(exception)
     }
-    assert hinted == {"SlipReversesInHalf", "StickZoneOutsideContact"}
+    assert hinted == {"SlipReversesInHalf", "StickZoneOutsideContact", "NoConvergence"}

@@ -207,14 +207,8 @@ impl Contact {
                 right: e + a,
             },
             rotation: -e / radius,
-            intensity: PerEdge {
-                left: k_n,
-                right: k_n,
-            },
-            on_flat: PerEdge {
-                left: false,
-                right: false,
-            },
+            intensity: PerEdge::from_fn(|_| k_n),
+            on_flat: PerEdge::default(),
             centred: false,
         }))
     }

@@ -27,14 +27,8 @@ impl NormalContact {
             moment: 0.0,
             ends: PerEdge { left: -a, right: a },
             rotation: 0.0,
-            intensity: PerEdge {
-                left: k_n,
-                right: k_n,
-            },
-            on_flat: PerEdge {
-                left: false,
-                right: false,
-            },
+            intensity: PerEdge::from_fn(|_| k_n),
+            on_flat: PerEdge::default(),
             centred: true,
         }
     }
