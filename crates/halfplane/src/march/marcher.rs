@@ -5,8 +5,8 @@
 //!
 //! Owns the active set (which cells are out, stuck or slipping) and the state fields. Never
 //! solves a linear system (`solve.rs`), builds the kernel (`kernel.rs`), integrates a sub-step's
-//! energy (`dissipation.rs`), does cycle accounting (`cycles.rs`) or holds a worn gap
-//! (`worn_gap.rs`).
+//! energy (`dissipation.rs`), labels its stick intervals (`intervals.rs`), does cycle accounting
+//! (`cycles.rs`) or holds a worn gap (`worn_gap.rs`).
 
 use super::evaluate::EndSolution;
 use super::kernel;
@@ -70,7 +70,7 @@ pub struct Marcher {
     pub(super) slip: Vec<f64>,
     slip_increment: Vec<f64>,
     /// Sum of |slip| over the sub-steps of the current increment (for the stick/slip labels).
-    slip_travel: Vec<f64>,
+    pub(super) slip_travel: Vec<f64>,
     /// Slip of the current sub-step.
     pub(super) sub_slip: Vec<f64>,
     /// Slip of the current sub-step's first active-set pass (the stick set of its start).
@@ -337,35 +337,8 @@ impl Marcher {
         self.reported_kinks = self.view.as_ref().map_or(Vec::new(), |v| v.kinks.clone());
         // Kinematic classification: contact cells that did not slip this increment.
         let ends = target.ends();
-        let n = self.x.len();
         let tolerance = self.options.slip_tolerance() * self.compliance * f * load.normal();
-        let mut stick_intervals: Vec<[f64; 2]> = Vec::new();
-        let mut open: Option<usize> = None;
-        for i in 0..=n {
-            let sticks = i < n && self.cells[i] != Cell::Out && self.slip_travel[i] <= tolerance;
-            match (sticks, open) {
-                (true, None) => open = Some(i),
-                (false, Some(start)) => {
-                    // A run ends at a cell edge, or at the boundary located inside a cell next to
-                    // it (within a cell of that edge, with the run on its stick side).
-                    let located = |edge: f64, root: Edge| {
-                        self.reported_kinks
-                            .iter()
-                            .filter(|k| k.root == root)
-                            .map(|k| k.x)
-                            .find(|at| (at - edge).abs() <= self.width)
-                            .unwrap_or(edge)
-                    };
-                    let left =
-                        located(self.x[start] - 0.5 * self.width, Edge::Right).max(ends.left);
-                    let right =
-                        located(self.x[i - 1] + 0.5 * self.width, Edge::Left).min(ends.right);
-                    stick_intervals.push([left, right]);
-                    open = None;
-                }
-                _ => {}
-            }
-        }
+        let stick_intervals = self.stick_intervals(ends, tolerance);
         Ok(StepReport {
             step,
             load,

@@ -63,6 +63,7 @@ mod dissipation;
 #[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
 mod evaluate;
 pub(crate) mod gap;
+mod intervals;
 mod kernel;
 mod layout;
 mod marcher;
