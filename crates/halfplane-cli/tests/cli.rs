@@ -387,11 +387,16 @@ fn messages_echo_numbers_as_people_write_them() {
     ];
     for (from, to, expected) in cases {
         let case = case_with("written", &GOOD.replace(from, to), None);
-        let o = run(&["steady", case.to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(2), "{to}");
-        assert!(stderr(&o).contains(expected), "{to}: {}", stderr(&o));
-        assert!(!stderr(&o).contains("00000000"), "{to}: {}", stderr(&o));
+        assert_echoed_as_written(to, &run(&["steady", case.to_str().unwrap()]), expected);
     }
+}
+
+/// Exit 2 with the value in the message as written (`expected`), not as hundreds of digits.
+fn assert_echoed_as_written(what: &str, o: &std::process::Output, expected: &str) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+    assert!(err.contains(expected), "{what}: {err}");
+    assert!(!err.contains("00000000"), "{what}: {err}");
 }
 
 /// The same for values the case crate checks itself: a history row, `wear.span` and `match`'s
@@ -431,10 +436,7 @@ fn history_rows_wear_span_and_match_options_echo_numbers_as_written() {
         ),
     ];
     for (args, expected) in runs {
-        let o = run(&args);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
-        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
-        assert!(!stderr(&o).contains("00000000"), "{args:?}: {}", stderr(&o));
+        assert_echoed_as_written(&format!("{args:?}"), &run(&args), expected);
     }
 }
 
@@ -490,9 +492,6 @@ fn sign_checks_echo_numbers_as_written() {
         ),
     ];
     for (args, expected) in runs {
-        let o = run(&args);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
-        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
-        assert!(!stderr(&o).contains("00000000"), "{args:?}: {}", stderr(&o));
+        assert_echoed_as_written(&format!("{args:?}"), &run(&args), expected);
     }
 }
