@@ -549,9 +549,10 @@ pub(crate) fn finite(field: &str, value: f64) -> Result<f64> {
 /// when no step was ever taken, because none reduced the residual.
 fn convergence_note(iterations: usize, last_step: f64) -> String {
     let plural = if iterations == 1 { "" } else { "s" };
-    if last_step.is_finite() {
-        format!("in {iterations} iteration{plural} (last relative step {last_step:e})")
+    let ending = if last_step.is_finite() {
+        format!("last relative step {last_step:e}")
     } else {
-        format!("in {iterations} iteration{plural} (no step reduced the residual)")
-    }
+        "no step reduced the residual".to_string()
+    };
+    format!("in {iterations} iteration{plural} ({ending})")
 }
