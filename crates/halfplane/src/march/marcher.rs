@@ -12,7 +12,7 @@ use super::evaluate::EndSolution;
 use super::kernel;
 use super::layout::Layout;
 use super::moments::PressureShape;
-use super::predict::StickEnds;
+use super::predict::{restick_reversed, StickEnds};
 use super::solve::{apply, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, RelativeDisplacement, StepReport};
@@ -397,7 +397,17 @@ impl Marcher {
         let mut passes = 0;
         let mut shift;
         let (mut restarts, mut forced) = (0, None);
-        let mut ends = StickEnds::new(self.pressure == self.pressure_start);
+        let pressure_unchanged = self.pressure == self.pressure_start;
+        if pressure_unchanged && d_sigma == 0.0 {
+            let d_shear = load.shear() - self.load.map_or(0.0, |p| p.shear());
+            restick_reversed(&mut self.cells, d_shear);
+        }
+        let centre = {
+            // In cell widths from the grid's left edge, where the cell indices count from.
+            let e = target.ends();
+            (0.5 * (e.left + e.right) - (self.x[0] - 0.5 * self.width)) / self.width
+        };
+        let mut ends = StickEnds::new(pressure_unchanged, centre);
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
