@@ -124,6 +124,65 @@ fn boundaries_moved_by_many_cells_in_one_increment_take_a_bounded_number_of_pass
     }
 }
 
+/// The extrapolated ends and a reversal's re-stuck start only choose trial sets: a load reaching
+/// 0.97 f P in one increment and -0.97 f P in one more (both predicted) ends where the same load
+/// in 16 increments each way does (passes of one or two cells, nothing to extrapolate). At
+/// constant P and with Q monotone in each half, exact theory gives the same tractions and
+/// energy for both paths (the slip of every cell is monotone in each half, the final stick set
+/// never slipped in it). Measured on Hertz, 1600 cells: tractions 1.0e-12 f p0 apart, energies
+/// equal to 12 digits. The tolerances, 1e-9 of f p0 and of the energy, sit above the solvers'
+/// rounding along different paths to one set (up to 4e-11 relative at 25,600 cells) and far
+/// below a cell's change of state (about 1e-2 f p0 in the traction).
+#[test]
+fn extrapolated_passes_end_where_small_increments_do() {
+    for (name, profile) in [
+        ("Hertz", Profile::hertz(RADIUS).unwrap()),
+        ("flat-rounded", Profile::flat_rounded(0.3, RADIUS).unwrap()),
+    ] {
+        let c = contact(profile);
+        let q = 0.97 * 0.6 * 1000.0;
+        let steps: Vec<[f64; 3]> = (1..=16)
+            .map(|i| [1000.0, q * i as f64 / 16.0, 0.0])
+            .chain((1..=16).map(|i| [1000.0, q - 2.0 * q * i as f64 / 16.0, 0.0]))
+            .collect();
+        let small: Vec<[f64; 3]> = [[1000.0, 0.0, 0.0]].into_iter().chain(steps).collect();
+        let large = [[1000.0, 0.0, 0.0], [1000.0, q, 0.0], [1000.0, -q, 0.0]];
+        let (r_large, q_large) = traction_at(&c, &large, 1600, 3);
+        let (r_small, q_small) = traction_at(&c, &small, 1600, 33);
+        let predicted = r_large.steps[2].passes;
+        assert!(
+            predicted > 3,
+            "{name}: the reversal took {predicted} passes, too few for the ends to be extrapolated"
+        );
+        // Hertz's peak pressure at this P and half-width: the traction scale (for the
+        // flat-rounded contact too).
+        let a = r_large.steps[2].half_width;
+        let f_p0 = 0.6 * 2.0 * 1000.0 / (std::f64::consts::PI * a);
+        let worst = q_large
+            .iter()
+            .zip(&q_small)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst <= 1e-9 * f_p0,
+            "{name}: tractions after Q to +-0.97 f P in one increment each way differ from 16 increments each way by {worst:.3e} (f p0 = {f_p0:.3e})"
+        );
+        let (e_large, e_small) = (
+            r_large.steps.last().unwrap().energy,
+            r_small.steps.last().unwrap().energy,
+        );
+        assert!(
+            (e_large - e_small).abs() <= 1e-9 * e_small,
+            "{name}: dissipated energy {e_large:.12e} in two increments against {e_small:.12e} in 32"
+        );
+        assert_eq!(
+            r_large.steps[2].largest_stick(),
+            r_small.steps.last().unwrap().largest_stick(),
+            "{name}: the stick zone differs"
+        );
+    }
+}
+
 #[test]
 fn cattaneo_mindlin_loading() {
     let c = contact(Profile::hertz(RADIUS).unwrap());
