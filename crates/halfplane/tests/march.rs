@@ -76,6 +76,17 @@ fn traction_at(
     (r, q)
 }
 
+/// The two reference contacts most march tests run on, with their names.
+fn hertz_and_flat_rounded() -> [(&'static str, Contact); 2] {
+    [
+        ("Hertz", contact(Profile::hertz(RADIUS).unwrap())),
+        (
+            "flat-rounded",
+            contact(Profile::flat_rounded(0.3, RADIUS).unwrap()),
+        ),
+    ]
+}
+
 /// One increment from Q = 0 to 0.5 or 0.97 f P moves each stick-slip boundary by a fifth of the
 /// contact or more, and one back to minus that reverses the slip over the same distance: the
 /// plain active set took one pass more per doubling of the cells (at 25,600 cells 14 passes for
@@ -86,11 +97,7 @@ fn traction_at(
 /// reversed slip zone, for Q to -Q, is the whole slip zone: Johnson, section 7.2).
 #[test]
 fn boundaries_moved_by_many_cells_in_one_increment_take_a_bounded_number_of_passes() {
-    for (name, profile) in [
-        ("Hertz", Profile::hertz(RADIUS).unwrap()),
-        ("flat-rounded", Profile::flat_rounded(0.3, RADIUS).unwrap()),
-    ] {
-        let c = contact(profile);
+    for (name, c) in hertz_and_flat_rounded() {
         for ratio in [0.5, 0.97] {
             let q = ratio * 0.6 * 1000.0;
             let rows = [[1000.0, 0.0, 0.0], [1000.0, q, 0.0], [1000.0, -q, 0.0]];
@@ -135,11 +142,7 @@ fn boundaries_moved_by_many_cells_in_one_increment_take_a_bounded_number_of_pass
 /// below a cell's change of state (about 1e-2 f p0 in the traction).
 #[test]
 fn extrapolated_passes_end_where_small_increments_do() {
-    for (name, profile) in [
-        ("Hertz", Profile::hertz(RADIUS).unwrap()),
-        ("flat-rounded", Profile::flat_rounded(0.3, RADIUS).unwrap()),
-    ] {
-        let c = contact(profile);
+    for (name, c) in hertz_and_flat_rounded() {
         let q = 0.97 * 0.6 * 1000.0;
         let steps: Vec<[f64; 3]> = (1..=16)
             .map(|i| [1000.0, q * i as f64 / 16.0, 0.0])
@@ -384,11 +387,7 @@ fn assert_full_stick(c: &Contact, name: &str, cells: usize, steps: usize) {
 fn full_stick_cycles_dissipate_nothing() {
     // A sample of the sweep in `full_stick_sweep` (ignored; see docs/convergence.md), chosen to
     // include the coarsest grid and time step, where the old advancing-edge ratchet was largest.
-    for (name, profile) in [
-        ("Hertz", Profile::hertz(RADIUS).unwrap()),
-        ("flat-rounded", Profile::flat_rounded(0.3, RADIUS).unwrap()),
-    ] {
-        let c = contact(profile);
+    for (name, c) in hertz_and_flat_rounded() {
         for (cells, steps) in [(100, 5), (400, 20), (250, 60)] {
             assert_full_stick(&c, name, cells, steps);
         }
@@ -399,11 +398,7 @@ fn full_stick_cycles_dissipate_nothing() {
 #[ignore = "full sweep, ~1 min in release; see docs/convergence.md"]
 fn full_stick_sweep() {
     // `cargo test --release -p halfplane --test march -- --ignored full_stick_sweep`
-    for (name, profile) in [
-        ("Hertz", Profile::hertz(RADIUS).unwrap()),
-        ("flat-rounded", Profile::flat_rounded(0.3, RADIUS).unwrap()),
-    ] {
-        let c = contact(profile);
+    for (name, c) in hertz_and_flat_rounded() {
         for cells in [100, 200, 400, 800, 1600, 3200] {
             for steps in [5, 10, 20, 50, 100, 200, 400] {
                 assert_full_stick(&c, name, cells, steps);

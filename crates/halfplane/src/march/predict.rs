@@ -30,7 +30,7 @@
 //!
 //! Measured reach (`BENCHMARKS.md`, with [`restick_reversed`]): Hertz and flat-rounded contacts,
 //! Q to 0.5, 0.8 and 0.97 f P in one increment and back to minus that in one, 100 to 204,800
-//! cells: at most 10 passes per increment (at most 8 but for one case), where the plain passes
+//! cells: at most 10 passes per increment (at most 8 but for two cases), where the plain passes
 //! grew to 14-20.
 
 use super::marcher::Cell;
