@@ -2,9 +2,10 @@
 //! (docs/theory.md, "Time marching": moving edges, exactly), each with the contact there, found
 //! from the contact law on the mirrored grid or by bisection on each end.
 //!
-//! Owns the sub-step ends of [`Marcher::step`]. Never solves the tangential problem.
+//! Owns the sub-step ends of [`Marcher::step`] and each sub-step's pressure and cells in contact
+//! (`press`). Never solves the tangential problem.
 
-use super::marcher::Marcher;
+use super::marcher::{Cell, Marcher};
 use crate::error::{Error, Result};
 use crate::labels::Edge;
 use crate::load::LoadPoint;
@@ -135,5 +136,44 @@ impl Marcher {
             iterations: 60,
             last_step: hi - lo,
         })
+    }
+
+    /// The pressure of the new contact `target` and the cells in contact: a cell stays in
+    /// contact until the receding edge reaches its centre (its pressure, and so its traction, is
+    /// zero then) and joins, sticking, when the advancing edge does. Keeps the sub-step's start.
+    pub(super) fn press(&mut self, target: &NormalContact) -> Result<()> {
+        self.target = Some(*target);
+        self.pressure_start.copy_from_slice(&self.pressure);
+        let (now, then) = (
+            target.ends(),
+            self.state.map_or(target.ends(), |s| s.ends()),
+        );
+        let (lower, upper) = (now.left.min(then.left), now.right.max(then.right));
+        for i in 0..self.x.len() {
+            if let Some(gap) = &self.gap {
+                // On the grid the solved pressure says which cells touch.
+                let p = gap.solution.as_ref().map_or(0.0, |s| s.pressure[i]);
+                self.pressure[i] = p;
+                match (p > 0.0, self.cells[i]) {
+                    (false, _) => self.cells[i] = Cell::Out,
+                    (true, Cell::Out) => self.cells[i] = Cell::Stick,
+                    _ => {}
+                }
+                continue;
+            }
+            let inside = self.x[i] > lower && self.x[i] < upper;
+            self.pressure[i] = if inside {
+                self.contact.pressure_at(target, self.x[i])?
+            } else {
+                0.0
+            };
+            match (inside, self.cells[i]) {
+                (false, _) => self.cells[i] = Cell::Out,
+                (true, Cell::Out) => self.cells[i] = Cell::Stick,
+                _ => {}
+            }
+        }
+        self.start_cells.copy_from_slice(&self.cells);
+        Ok(())
     }
 }

@@ -554,45 +554,6 @@ impl Marcher {
         self.state.map_or(PerEdge::default(), |s| s.ends())
     }
 
-    /// The pressure of the new contact `target` and the cells in contact: a cell stays in
-    /// contact until the receding edge reaches its centre (its pressure, and so its traction, is
-    /// zero then) and joins, sticking, when the advancing edge does. Keeps the sub-step's start.
-    fn press(&mut self, target: &NormalContact) -> Result<()> {
-        self.target = Some(*target);
-        self.pressure_start.copy_from_slice(&self.pressure);
-        let (now, then) = (
-            target.ends(),
-            self.state.map_or(target.ends(), |s| s.ends()),
-        );
-        let (lower, upper) = (now.left.min(then.left), now.right.max(then.right));
-        for i in 0..self.x.len() {
-            if let Some(gap) = &self.gap {
-                // On the grid the solved pressure says which cells touch.
-                let p = gap.solution.as_ref().map_or(0.0, |s| s.pressure[i]);
-                self.pressure[i] = p;
-                match (p > 0.0, self.cells[i]) {
-                    (false, _) => self.cells[i] = Cell::Out,
-                    (true, Cell::Out) => self.cells[i] = Cell::Stick,
-                    _ => {}
-                }
-                continue;
-            }
-            let inside = self.x[i] > lower && self.x[i] < upper;
-            self.pressure[i] = if inside {
-                self.contact.pressure_at(target, self.x[i])?
-            } else {
-                0.0
-            };
-            match (inside, self.cells[i]) {
-                (false, _) => self.cells[i] = Cell::Out,
-                (true, Cell::Out) => self.cells[i] = Cell::Stick,
-                _ => {}
-            }
-        }
-        self.start_cells.copy_from_slice(&self.cells);
-        Ok(())
-    }
-
     /// Ends the sub-step at `load` (contact `target`): the traction increments and the settled
     /// slips added, the traction of cells out of contact zero.
     fn commit(&mut self, load: LoadPoint, target: NormalContact) {
