@@ -10,7 +10,11 @@
 //! - one unknown constant per free stick cell (a run of them sees the Toeplitz kernel);
 //! - per boundary inside a cell, two more unknowns: the constant of its boundary element and the
 //!   amplitude of the square root `sqrt(|x - at|)` over its zone, the shape the traction takes at
-//!   a stick-slip boundary (its slip grows like `|x - at|^(3/2)`).
+//!   a stick-slip boundary (its slip grows like `|x - at|^(3/2)`);
+//! - on the boundary element, a known ramp with the limit's slope through zero at `at`: the stick
+//!   side is `s f p(x) - K sqrt(|x - at|) + O(|x - at|^(3/2))` (a kink `|x - at|` on one side
+//!   would give a logarithmic slip rate in the stick zone), so a constant alone misplaced `at` by
+//!   the limit's slope times half the element (0.013 cells seven cells from a contact edge).
 //!
 //! Stick holds at the free cells' centres, at each element's collocation point and at each
 //! boundary itself; the resultant is the shear. The free cells are eliminated with the solver of
@@ -115,8 +119,13 @@ impl Marcher {
         // Known special shapes: on each boundary's cells the old traction goes (the element
         // carries a constant of its own and the roots) and the slip part takes the limit, linear
         // with its exact mean and first moment.
+        let slopes = layout
+            .ends
+            .iter()
+            .map(|e| self.element_slope(e))
+            .collect::<Result<Vec<f64>>>()?;
         let mut known: Vec<Known> = Vec::new();
-        for e in &layout.ends {
+        for (j, e) in layout.ends.iter().enumerate() {
             let [lo, hi] = e.slip_part;
             if hi > lo {
                 let [value, slope] = self.limit_fit(e.cell, e.sign, lo, hi);
@@ -133,6 +142,21 @@ impl Marcher {
                     coefficient: 1.0,
                 });
             }
+            // The element's traction follows the limit's slope on top of its constant: near a
+            // boundary the stick side is `s f p(x) - K sqrt(|x - at|) + O(|x - at|^(3/2))`.
+            let [lo, hi] = e.support;
+            known.push(Known {
+                element: Element::new(
+                    lo,
+                    hi,
+                    Shape::Affine {
+                        centre: e.at,
+                        value: 0.0,
+                        slope: slopes[j],
+                    },
+                ),
+                coefficient: 1.0,
+            });
             for i in std::iter::once(e.cell).chain(e.merged) {
                 let xi = self.x[i];
                 known.push(Known {
@@ -258,7 +282,7 @@ impl Marcher {
             }
         }
         self.shift = c;
-        self.increments(layout, &unknown, specials, &z);
+        self.increments(layout, &unknown, specials, &slopes, &z);
         // Displacement at every centre, for the slips: G dq.
         let mut g_free = vec![0.0; n];
         apply(&mut self.kernel, &self.dense, &z, &mut g_free);
@@ -403,7 +427,14 @@ impl Marcher {
     /// The increments of the cells' centre values (`dq`) from a solution: free constants `z`,
     /// special unknowns `specials` (per boundary, the element's constant and the root's
     /// amplitude).
-    fn increments(&mut self, layout: &Layout, unknown: &[Special], specials: &[f64], z: &[f64]) {
+    fn increments(
+        &mut self,
+        layout: &Layout,
+        unknown: &[Special],
+        specials: &[f64],
+        slopes: &[f64],
+        z: &[f64],
+    ) {
         let f = self.friction;
         let roots_at = |y: f64| -> f64 {
             (0..layout.ends.len())
@@ -425,7 +456,7 @@ impl Marcher {
                         .expect("an element cell belongs to a boundary");
                     // The element's constant with the roots on the stick side, the limit beyond.
                     let q_new = if e.side * (xi - e.at) < 0.0 {
-                        specials[2 * q] + roots_at(xi)
+                        specials[2 * q] + slopes[q] * (xi - e.at) + roots_at(xi)
                     } else {
                         e.sign * f * self.pressure[i]
                     };
@@ -433,6 +464,14 @@ impl Marcher {
                 }
             };
         }
+    }
+
+    /// The slope of the limit `s f p` across boundary `e`'s element (the secant over its
+    /// support), which the element's traction follows on top of its constant.
+    fn element_slope(&self, e: &super::layout::SoftEnd) -> Result<f64> {
+        let [lo, hi] = e.support;
+        let dp = self.pressure_at(hi)? - self.pressure_at(lo)?;
+        Ok(e.sign * self.friction * dp / (hi - lo))
     }
 
     /// The limit `s f p` on `[lo, hi]` inside cell `i` as `[value at the midpoint, slope]`, with

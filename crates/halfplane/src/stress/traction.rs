@@ -25,6 +25,12 @@ pub struct Traction {
     pub(super) edges: Vec<SqrtEdge>,
 }
 
+/// Intervals on a located stick-slip boundary's stick side over which its square root is exact
+/// ([`Traction::from_march_ends`]): 1600 cells, Mindlin's unloading, surface `sxx` within 5
+/// cells of the boundaries off by at most 2.2e-3, 1.5e-3, 7.5e-4, 6.5e-4, 5.7e-4 p0 over 1, 2,
+/// 3, 4, 8 intervals (`tests/sub_cell.rs`).
+const ROOT_NODES: usize = 4;
+
 /// Most nodes a traction may have (memory of a march with [`crate::march::MarchOptions::MAX_CELLS`]).
 pub const MAX_NODES: usize = 1_000_002;
 
@@ -169,11 +175,14 @@ impl Traction {
     ///
     /// A stick-slip boundary that the march located inside its cell (the fields' `kinks`, with
     /// [`MarchOptions::with_sub_cell_boundaries`](crate::march::MarchOptions::with_sub_cell_boundaries))
-    /// is a node of its own, with the pressure and shear there, and the interval from it to the
-    /// next node on its stick side carries the square root `amplitude sqrt(|x - x_b|)` beyond the
-    /// linear interpolant (the shape of the contact edges' intervals, `docs/stress.md`):
-    /// interpolated linearly between the centres around it, the kink put an error of
-    /// `O(K sqrt(w))` (1.8e-2 p0 at 1600 cells) into the surface stress there.
+    /// is a node of its own, with the pressure and shear there, and the four (`ROOT_NODES`) intervals
+    /// from it towards its stick side (fewer before a contact edge's interval or another kink)
+    /// carry the square root `amplitude sqrt(|x - x_b|)` exactly: the nodes inside take off the
+    /// root's departure from its chord over those intervals, so that the linear interpolant
+    /// holds only the smooth rest, and one correction of the contact edges' shape
+    /// (`docs/stress.md`) spans them. Interpolated linearly between the centres around it, the
+    /// kink put an error of `O(K sqrt(w))` (1.8e-2 p0 at 1600 cells) into the surface stress
+    /// there; with the root over its first interval only, 2e-3 p0 one cell inside.
     pub fn from_march_ends(ends: PerEdge<f64>, fields: &Fields) -> Result<Self> {
         let PerEdge { left, right } = ends;
         physical("contact end b1", left)?;
@@ -232,22 +241,52 @@ impl Traction {
             }
             kinks.push((kink.x, kink.root, kink.amplitude));
         }
-        let mut t = Self::contact(&x, &p, &q)?;
-        for (at, root, amplitude) in kinks {
-            let k = x.partition_point(|&v| v < at - 1e-6 * spacing);
-            let other = match root {
-                Edge::Left => x[k.saturating_sub(1)],
-                Edge::Right => x[(k + 1).min(x.len() - 1)],
+        // Each kink's root spans ROOT_NODES intervals on its stick side (fewer before a contact
+        // edge's interval or another kink): the nodes inside take the root's departure from its
+        // chord, so that the linear interpolant carries only the smooth rest of the traction.
+        let kink_nodes: Vec<usize> = kinks
+            .iter()
+            .map(|&(at, ..)| x.partition_point(|&v| v < at - 1e-6 * spacing))
+            .collect();
+        let mut roots = Vec::with_capacity(kinks.len());
+        for (&(at, root, amplitude), &k) in kinks.iter().zip(&kink_nodes) {
+            let last = x.len() - 1;
+            let towards = |i: usize| match root {
+                Edge::Left => i.checked_sub(1).filter(|&j| j >= 1),
+                Edge::Right => Some(i + 1).filter(|&j| j < last),
             };
-            let length = other - at;
-            if length != 0.0 {
-                t.edges.push(SqrtEdge {
-                    edge: at,
-                    length,
-                    value: [0.0, amplitude * length.abs().sqrt()],
-                });
+            let mut end = k;
+            for _ in 0..ROOT_NODES {
+                match towards(end) {
+                    Some(j) if !kink_nodes.contains(&j) => end = j,
+                    _ => break,
+                }
             }
+            if end == k {
+                // No node on the stick side short of a contact edge's interval: the root spans
+                // the one interval there.
+                end = match root {
+                    Edge::Left => k.saturating_sub(1),
+                    Edge::Right => (k + 1).min(last),
+                };
+            }
+            let length = x[end] - at;
+            if length == 0.0 {
+                continue;
+            }
+            let (lo, hi) = (k.min(end) + 1, k.max(end));
+            for i in lo..hi {
+                let d = (x[i] - at).abs();
+                q[i] += amplitude * (d / length.abs().sqrt() - d.sqrt());
+            }
+            roots.push(SqrtEdge {
+                edge: at,
+                length,
+                value: [0.0, amplitude * length.abs().sqrt()],
+            });
         }
+        let mut t = Self::contact(&x, &p, &q)?;
+        t.edges.extend(roots);
         Ok(t)
     }
 

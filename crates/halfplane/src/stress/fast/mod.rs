@@ -48,6 +48,9 @@ struct Elements {
     left: Vec<[f64; 2]>,
     slope: Vec<[f64; 2]>,
     edges: Vec<(usize, SqrtEdge)>,
+    /// Corrections spanning several elements (the square roots of located stick-slip
+    /// boundaries): a handful, summed exactly at every point instead of entering a box.
+    long: Vec<SqrtEdge>,
 }
 
 impl Elements {
@@ -68,16 +71,22 @@ impl Elements {
                 v[c] += s[c] * h;
             }
         }
-        let edges = t
-            .edges
-            .iter()
-            .map(|e| {
-                let start = e.edge.min(e.edge + e.length);
-                let k = t.nodes.partition_point(|&x| x < start).min(n - 2);
-                (k, *e)
-            })
-            .collect();
-        Self { left, slope, edges }
+        let (mut edges, mut long) = (Vec::new(), Vec::new());
+        for e in &t.edges {
+            let start = e.edge.min(e.edge + e.length);
+            let k = t.nodes.partition_point(|&x| x < start).min(n - 2);
+            if t.nodes[k + 1] >= start + e.length.abs() * (1.0 - 1e-9) {
+                edges.push((k, *e));
+            } else {
+                long.push(*e);
+            }
+        }
+        Self {
+            left,
+            slope,
+            edges,
+            long,
+        }
     }
 
     fn right(&self, t: &Traction, e: usize) -> [f64; 2] {
@@ -321,8 +330,9 @@ impl<'a> Tree<'a> {
             let u = x - self.origin;
             if u < 0.0 || u >= self.width || z >= self.width {
                 let y = Complex64::new(self.width, 0.0) / Complex64::new(x - centre, z);
-                let f = self.ex.m2p(root, y, self.width);
-                out[index] = stresses(&sums_of(f), z);
+                let mut s = sums_of(self.ex.m2p(root, y, self.width));
+                self.add_long(&mut s, x, z);
+                out[index] = stresses(&s, z);
                 continue;
             }
             inside.push(Target {
@@ -417,6 +427,7 @@ impl<'a> Tree<'a> {
                                 continue;
                             }
                         }
+                        self.add_long(&mut s, px, pz);
                         out[t.index] = stresses(&s, pz);
                     }
                 } else if group.len() <= FEW {
@@ -444,6 +455,7 @@ impl<'a> Tree<'a> {
                                 continue;
                             }
                         }
+                        self.add_long(&mut s, px, pz);
                         out[t.index] = stresses(&s, pz);
                     }
                 } else {
@@ -493,6 +505,13 @@ impl<'a> Tree<'a> {
         } else {
             self.add_box(l + 1, 2 * j, x, z, s, direct);
             self.add_box(l + 1, 2 * j + 1, x, z, s, direct);
+        }
+    }
+
+    /// Adds the corrections that span several elements, exactly.
+    fn add_long(&self, s: &mut Sums, x: f64, z: f64) {
+        for edge in &self.elements.long {
+            add_edge(s, edge, x, z);
         }
     }
 
