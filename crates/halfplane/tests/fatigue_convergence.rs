@@ -40,7 +40,10 @@ struct Run {
 }
 
 fn run(cells: usize, steps_per_half: usize) -> Run {
-    run_with(MarchOptions::default().with_cells(cells).unwrap(), steps_per_half)
+    run_with(
+        MarchOptions::default().with_cells(cells).unwrap(),
+        steps_per_half,
+    )
 }
 
 fn run_with(options: MarchOptions, steps_per_half: usize) -> Run {

@@ -37,7 +37,7 @@ const QUIET: f64 = 1e-4;
 /// a square root on the stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the
 /// `root` side, so that the stick zone's traction meets the friction limit with an infinite
 /// slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
-/// a square-root interval.
+/// its square root exactly over up to four cell intervals on its stick side.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TractionKink {
     /// Where the kink is.

@@ -12,9 +12,11 @@
 //!   amplitude of the square root `sqrt(|x - at|)` over its zone, the shape the traction takes at
 //!   a stick-slip boundary (its slip grows like `|x - at|^(3/2)`);
 //! - on the boundary element, a known ramp with the limit's slope through zero at `at`: the stick
-//!   side is `s f p(x) - K sqrt(|x - at|) + O(|x - at|^(3/2))` (a kink `|x - at|` on one side
-//!   would give a logarithmic slip rate in the stick zone), so a constant alone misplaced `at` by
-//!   the limit's slope times half the element (0.013 cells seven cells from a contact edge).
+//!   side is `s f p(x) - K sqrt(|x - at|) + O(|x - at|^(3/2))`: a kink `|x - at|` on one side
+//!   would put a term `d log d` into the tangential strain in the stick zone, which stick (a
+//!   rigid displacement increment there) forbids, while half-integer powers put nothing there.
+//!   A constant alone misplaced `at` by the limit's slope times half the element (0.013 cells
+//!   seven cells from a contact edge).
 //!
 //! Stick holds at the free cells' centres, at each element's collocation point and at each
 //! boundary itself; the resultant is the shear. The free cells are eliminated with the solver of

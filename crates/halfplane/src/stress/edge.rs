@@ -15,14 +15,18 @@
 
 use num_complex::Complex64;
 
-/// One interval next to a contact edge.
+/// A square-root correction over `[edge, edge + length]`: the interval next to a contact edge,
+/// or the intervals (one or several) on the stick side of a located stick-slip boundary
+/// (`Traction::from_march_ends`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct SqrtEdge {
-    /// The contact edge, where the tractions vanish.
+    /// Where the square root starts: a contact edge, where the tractions vanish, or a
+    /// stick-slip boundary.
     pub edge: f64,
-    /// The interval's length, towards the inside of the contact (positive: a left edge).
+    /// The span's length, away from `edge` (positive: towards +x).
     pub length: f64,
-    /// `[p, q]` at the interval's inner node.
+    /// `[p, q]` of the square root at the span's far end: at a contact edge, the inner node's
+    /// values; at a boundary, `amplitude sqrt(|length|)` in q.
     pub value: [f64; 2],
 }
 

@@ -21,7 +21,8 @@ pub struct Traction {
     pub(super) jump: Vec<[f64; 2]>,
     /// `[S_p, S_q]` per node: jump of the slope, right minus left.
     pub(super) kink: Vec<[f64; 2]>,
-    /// Square-root corrections of the intervals next to contact edges (`edge.rs`).
+    /// Square-root corrections (`edge.rs`): the intervals next to contact edges, and the
+    /// intervals on the stick side of each located stick-slip boundary.
     pub(super) edges: Vec<SqrtEdge>,
 }
 
