@@ -116,6 +116,7 @@ impl Expansions {
 
     /// Adds the child multipole `child` (width `s/2`, centre `c + delta s`) to `parent` (width
     /// `s`, centre `c`): `m_n = sum_(k <= n) C(n, k) delta^(n-k) 2^(-k) m'_k`.
+    #[inline]
     pub fn m2m(&self, parent: &mut [f64], child: &[f64], delta: f64) {
         let p = self.order;
         let mut pw = [0.0; MAX_ORDER];
