@@ -49,9 +49,16 @@ impl Marcher {
             return Ok(());
         }
         self.v_mask.clear();
-        let b: Vec<f64> = set.iter().map(|s| if *s { 1.0 } else { 0.0 }).collect();
         let mut out = std::mem::take(&mut self.v);
-        let result = self.solve_set(set, &b, &mut out, step);
+        let runs = runs_of(set);
+        let result = if let ([(s, e)], None) = (&runs[..], &self.dense) {
+            out.iter_mut().for_each(|v| *v = 0.0);
+            self.kernel.solve_ones(&mut out[*s..*e]);
+            Ok(())
+        } else {
+            let b: Vec<f64> = set.iter().map(|s| if *s { 1.0 } else { 0.0 }).collect();
+            self.solve_set(set, &b, &mut out, step)
+        };
         self.v = out;
         if result.is_ok() {
             self.v_mask.extend_from_slice(set);

@@ -31,6 +31,10 @@ const CACHE: usize = 12;
 /// at most this many orders away; farther, conjugate gradients (O(n log n) per iteration, a few
 /// tens of iterations) cost less.
 const LEVINSON_STEPS_MAX: usize = 64;
+/// [`Toeplitz::solve_ones`] borders its last vector across at most this many orders.
+const ONES_STEPS_MAX: usize = 32;
+/// [`Toeplitz::solve_ones`] solves afresh after this many bordering steps in all.
+const ONES_REFRESH: usize = 256;
 /// Below this order a generator with no cached neighbour is built by Levinson from order 1.
 const CG_FROM: usize = 256;
 /// Most conjugate-gradient iterations for a generator.
@@ -130,6 +134,10 @@ pub(crate) struct Toeplitz {
     work2: Vec<Complex<f64>>,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    /// `T_m^{-1} 1` for the last order m asked of [`Toeplitz::solve_ones`].
+    ones: Vec<f64>,
+    /// Bordering steps taken since `ones` was last solved.
+    ones_steps: usize,
 }
 
 impl Toeplitz {
@@ -173,6 +181,8 @@ impl Toeplitz {
             work2: vec![Complex::default(); m / 2 + 1],
             buf: vec![0.0; m],
             buf2: vec![0.0; m],
+            ones: Vec::new(),
+            ones_steps: 0,
         })
     }
 
@@ -280,6 +290,52 @@ impl Toeplitz {
                 fft.invert(w1, z);
             }
         }
+    }
+
+    /// `z = T_n^{-1} 1` for n = z.len(). A stick run's order changes by a cell or two from one
+    /// set to the next, so the last order's vector is bordered to n (O(n) per order, exact in
+    /// exact arithmetic) when it is at most [`ONES_STEPS_MAX`] orders away, and solved afresh
+    /// otherwise or after [`ONES_REFRESH`] steps (rounding accumulates over the steps).
+    ///
+    /// Bordering (Golub & Van Loan, 4th ed., section 4.7): with `c = J x` the last column of
+    /// `T_{k+1}^{-1}` (persymmetry; x its first column, the generator), the inverse of the
+    /// bordered matrix gives `T_{k+1}^{-1} 1 = [T_k^{-1} 1; 0] + (sum(x)/x_0) c`: its last entry
+    /// is the last column's sum, as it must be. Going down inverts the same relation.
+    pub fn solve_ones(&mut self, z: &mut [f64]) {
+        let n = z.len();
+        let m = self.ones.len();
+        let steps = m.abs_diff(n);
+        if m >= DIRECT_BELOW && steps <= ONES_STEPS_MAX && self.ones_steps + steps <= ONES_REFRESH {
+            if steps > 0 {
+                let g = self.generator(m);
+                let mut x = self.cache[g].x.clone();
+                let v = &mut self.ones;
+                while v.len() < n {
+                    step_up(&mut x, &self.row);
+                    let (k, f) = (x.len(), x.iter().sum::<f64>() / x[0]);
+                    v.push(0.0);
+                    for (i, vi) in v.iter_mut().enumerate() {
+                        *vi += f * x[k - 1 - i];
+                    }
+                }
+                while v.len() > n {
+                    let (k, f) = (x.len(), x.iter().sum::<f64>() / x[0]);
+                    v.pop();
+                    for (i, vi) in v.iter_mut().enumerate() {
+                        *vi -= f * x[k - 1 - i];
+                    }
+                    step_down(&mut x);
+                }
+                self.ones_steps += steps;
+            }
+        } else {
+            let ones = vec![1.0; n];
+            let mut v = vec![0.0; n];
+            self.solve(&ones, &mut v);
+            self.ones = v;
+            self.ones_steps = 0;
+        }
+        z.copy_from_slice(&self.ones);
     }
 
     /// Index in the cache of the generator of order n: from the nearest cached one by Levinson
@@ -542,6 +598,39 @@ pub(super) mod tests {
             let e: f64 = (0..37).map(|j| row[i.abs_diff(j)] * v[j]).sum();
             assert!((y[i] - e).abs() < 1e-12 * e.abs().max(1.0), "{i}");
         }
+    }
+
+    #[test]
+    fn bordered_unit_solves_match_fresh_ones() {
+        // T_n^{-1} 1 carried from order to order by bordering, along a walk of the orders a
+        // stick run takes (up and down by one to 32 cells, 300 steps), against a fresh solve of
+        // the same order. The log kernel's condition grows like n, so each step adds about
+        // n eps relative; refreshed every 256 steps it stays near 4e-13, and 1e-10 leaves two
+        // decades.
+        let row = log_row(3000);
+        let mut t = Toeplitz::new(row.clone()).unwrap();
+        let mut fresh = Toeplitz::new(row).unwrap();
+        let mut n = 1500usize;
+        let mut worst = 0.0f64;
+        for k in 0..300 {
+            let step = 1 + (k * 7) % 32;
+            n = if (k / 5) % 2 == 0 { n + step } else { n - step };
+            let mut carried = vec![0.0; n];
+            t.solve_ones(&mut carried);
+            let mut direct = vec![0.0; n];
+            fresh.solve(&vec![1.0; n], &mut direct);
+            let scale = direct.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            for (a, b) in carried.iter().zip(&direct) {
+                worst = worst.max((a - b).abs() / scale);
+            }
+        }
+        eprintln!("bordered T^-1 1: largest difference {worst:.2e} of the largest entry");
+        assert!(
+            worst < 1e-10,
+            "bordered T^-1 1 off by {worst:e} of its largest entry"
+        );
+        // Bordering did the work: at most one fresh solve per 256 steps.
+        assert!(t.ones_steps > 0, "the walk's last vector was bordered");
     }
 
     #[test]
