@@ -19,7 +19,7 @@
 //! cells of negative pressure and adds those of negative gap until neither is left (Kalker's
 //! NORM algorithm, *Three-dimensional elastic bodies in rolling contact*, 1990, section 5.3).
 //! `K` is SPD Toeplitz on every run of contiguous cells: conjugate gradients with the exact
-//! inverse of each run's block as preconditioner (`toeplitz.rs`), so a contact of one run is
+//! inverse of each run's block as preconditioner (`toeplitz/`), so a contact of one run is
 //! solved in one step.
 //!
 //! Never deals with shear; never knows why the gap is what it is (the wear module's).

@@ -47,7 +47,7 @@
 //!
 //! This module owns only the overview above and the public paths; the work is done by stage:
 //! `types.rs` (options and reports), `kernel.rs` (the cell matrix and the special elements),
-//! `solve.rs` (the stick cells' linear systems), `toeplitz.rs` (FFT products and exact inverses of
+//! `solve.rs` (the stick cells' linear systems), `toeplitz/` (FFT products and exact inverses of
 //! stick runs), `marcher.rs` (the active set and the moving-edge sub-steps), `dissipation.rs` (the
 //! energy of a sub-step), `cycles.rs` (the driver, per-cycle slip ranges and shakedown), and for
 //! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs` and `boundary.rs`; `gap.rs`

@@ -1,5 +1,5 @@
 //! The stick cells' linear systems `G_SS z = b`: the exact inverse of one stick run (via
-//! `toeplitz.rs`), block elimination of a few extra stick cells (Schur complement), conjugate
+//! `toeplitz/`), block elimination of a few extra stick cells (Schur complement), conjugate
 //! gradients preconditioned by each run's exact inverse, and the dense Cholesky route of
 //! [`LinearSolver::Dense`](super::LinearSolver::Dense); also the kernel product `y = G v`.
 //!
