@@ -229,8 +229,10 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
     // NOT met: at Q = 300 on the cycle, 1.14e-2 p0 at x = +-c and 2.5e-3 half a cell inside. The
     // new boundary lands where the previous half's was (|c| at Q = -300 too), and the located
     // solve starts from the cell-level state, which carries that old kink with its cell-level
-    // error; the boundary comes out 0.13 cells off. The bounds for that state (1.2e-2, 3e-3) only
-    // keep what is reached from sliding back.
+    // error; the boundary comes out 0.13 cells off. It is the cells' error, not the time step's:
+    // 1.78e-2, 1.14e-2, 1.55e-3 p0 at 800, 1600, 3200 cells; 1.12e-2 at 1600 cells with 60
+    // increments per half. The bounds for that state (1.2e-2, 3e-3) only keep what is reached
+    // from sliding back.
     let mut thirty: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
     thirty.extend((1..=30).map(|i| [P, 300.0 * i as f64 / 30.0, 0.0]));
     thirty.push([P, 280.0, 0.0]);
