@@ -16,11 +16,15 @@
 //! stick intervals. The march goes on from the cell-level solution: coupled into the state, the
 //! located boundaries made the cycle's end state depend on where each boundary fell in its cell
 //! (a different discrete problem every increment), so cycles stopped repeating to rounding and
-//! cells left at the limit by a ramp crept (docs/convergence.md gives the measurements).
+//! cells left at the limit by a ramp crept (docs/convergence.md gives the measurements). The
+//! located solve starts from the cell-level state at the increment's last sub-step, or, within a
+//! stretch of the history whose slip zones only grow, from the located solution at the stretch's
+//! start (`chain.rs`).
 //!
 //! Owns the boundaries' search and the reported view. Never solves a linear system itself
 //! (`evaluate.rs` does) and never changes the state the next increment starts from.
 
+use super::chain::{Kink, Model};
 use super::layout::{layout, zones_of, End, Layout, Role};
 use super::marcher::{Cell, Marcher};
 use crate::error::Result;
@@ -61,12 +65,12 @@ pub(super) struct View {
 }
 
 impl Marcher {
-    /// The last sub-step of an increment solved again with its stick-slip boundaries located
-    /// inside their cells (`refine`), from the state at the sub-step's start, for what the
-    /// increment reports; the state goes on from the cell-level solution, whose buffers are
-    /// restored. `None` when no zone has a boundary next to a slipping cell at both ends (or
-    /// when the search finds none to locate): the cell-level state is reported. Returns the
-    /// solves used.
+    /// The increment solved again with its stick-slip boundaries located inside their cells
+    /// (`refine`), for what the increment reports: its last sub-step from the cell-level state
+    /// at that sub-step's start, or the whole stretch from its located start (`chain.rs`). The
+    /// state goes on from the cell-level solution, whose buffers are restored. `None` when no
+    /// stretch runs and no zone has a boundary next to a slipping cell at both ends (or the
+    /// search finds none to locate): the cell-level state is reported. Returns the solves used.
     pub(super) fn view(
         &mut self,
         load: LoadPoint,
@@ -83,15 +87,32 @@ impl Marcher {
             self.g_known.clone(),
             self.shift,
         );
+        // Where the located solve starts (`chain.rs`): a stretch's located start, over the
+        // load change since it, or the cell-level state at this sub-step.
+        self.stretch = self.stretch_for(&saved.1);
+        let cell_level = self.traction.clone();
+        let d_sigma = match &self.stretch {
+            Some(s) => {
+                self.traction.copy_from_slice(&s.start.centre);
+                self.start_mean.copy_from_slice(&s.start.mean);
+                self.start_slope.copy_from_slice(&s.start.slope);
+                load.bulk() - s.start.load.bulk()
+            }
+            None => {
+                self.start_mean.copy_from_slice(&cell_level);
+                self.start_slope.fill(0.0);
+                d_sigma
+            }
+        };
         self.layout = None;
-        let solves = self.refine(d_sigma, load.shear(), step)?;
-        if let Some(lay) = self.layout.take().filter(|l| !l.ends.is_empty()) {
-            let traction = self
-                .traction
-                .iter()
-                .zip(&self.dq)
-                .map(|(q, d)| q + d)
-                .collect();
+        let solves = self.located_solve(d_sigma, load.shear(), step);
+        let start = std::mem::replace(&mut self.traction, cell_level);
+        let solves = solves?;
+        self.located = None;
+        if let (Some(lay), Some((mean, slope, pieces))) =
+            (self.layout.take(), self.end_model.take())
+        {
+            let traction: Vec<f64> = start.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
             let mut kinks = Vec::with_capacity(lay.ends.len());
             for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
                 let pressure = self.pressure_at(e.at)?;
@@ -107,10 +128,41 @@ impl Marcher {
                     pressure,
                 });
             }
-            self.view = Some(View { traction, kinks });
+            let new = lay.ends.iter().zip(&kinks).map(|(e, k)| Kink {
+                x: e.at,
+                side: e.side,
+                amplitude: k.amplitude,
+            });
+            let kept = self.kept_kinks(&lay, new);
+            self.located = Some(Model {
+                centre: traction.clone(),
+                mean,
+                slope,
+                pieces,
+                kinks: kept,
+                load,
+                pressure: self.pressure.clone(),
+            });
+            if !lay.ends.is_empty() || self.stretch.is_some() {
+                self.view = Some(View { traction, kinks });
+            }
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
         Ok(solves)
+    }
+
+    /// [`Marcher::refine`]; from a stretch's located start with no boundary to locate, the
+    /// cell-level layout solved from that start (its cells stuck since the start keep its
+    /// traction). Returns the solves used.
+    fn located_solve(&mut self, d_sigma: f64, shear: f64, step: usize) -> Result<usize> {
+        let solves = self.refine(d_sigma, shear, step)?;
+        if self.layout.is_some() || self.stretch.is_none() {
+            return Ok(solves);
+        }
+        let lay = Layout::cells(&self.cells, &self.x, self.width);
+        self.end_solutions = self.evaluate(&lay, d_sigma, shear, step)?;
+        self.layout = Some(lay);
+        Ok(solves + 1)
     }
 
     /// Locates the stick-slip boundaries of the sub-step inside their cells, starting from the

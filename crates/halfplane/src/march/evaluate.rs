@@ -28,6 +28,7 @@
 //! Sign convention as in `marcher.rs`. Owns this solve only. Never moves a boundary and never
 //! changes the marcher's state fields (it writes the increments into work buffers).
 
+use super::chain::Piece;
 use super::kernel::{cell_kernels, Element, Shape};
 use super::layout::{Layout, Role};
 use super::marcher::Marcher;
@@ -41,7 +42,8 @@ use std::f64::consts::PI;
 pub(super) struct EndSolution {
     /// The boundary element's constant increment.
     pub constant: f64,
-    /// The amplitude of `sqrt(|x - at|)` in the increment.
+    /// The amplitude of `sqrt(|x - at|)` in the traction (the increment's, and a located
+    /// start's kink there, `chain.rs`).
     pub amplitude: f64,
     /// `s q(at-) - f p(at)`: how far the stick side's traction at the boundary exceeds the limit.
     pub jump: f64,
@@ -53,7 +55,7 @@ pub(super) struct Special {
     pub near: Element,
     /// The whole root, for its value at a point.
     whole: Option<Element>,
-    far: Option<(Vec<f64>, Vec<f64>)>,
+    pub far: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Special {
@@ -91,9 +93,11 @@ pub(super) struct Known {
 
 impl Marcher {
     /// Solves the current sub-step on `layout` (tension change `d_sigma`, total shear `shear`)
-    /// from the cells' centre tractions, piecewise constant. Writes `dq` (centre
-    /// values), `dmean`, `dslope` (the cells' model), `sub_slip`, `known` and `g_known` (for
-    /// `dissipation.rs`) and the rigid shift; returns the solution at each boundary.
+    /// from the start whose centre values are `traction`, whose smooth part has the cell means
+    /// and slopes `start_mean` and `start_slope`, and, from a located start (`chain.rs`), its
+    /// pieces and kinks. Writes `dq` (centre values), `end_model` (the smooth part and the
+    /// pieces at the end), `sub_slip`, `known` and `g_known` (for `dissipation.rs`) and the
+    /// rigid shift; returns the solution at each boundary.
     pub(super) fn evaluate(
         &mut self,
         layout: &Layout,
@@ -103,15 +107,16 @@ impl Marcher {
     ) -> Result<Vec<EndSolution>> {
         let n = self.x.len();
         let (w, f, scale) = (self.width, self.friction, self.scale);
-        // Known increments of whole cells as a mean and a slope: the old traction is the cell's
-        // constant, the limit of a slipping cell has both.
+        // Known increments of whole cells as a mean and a slope: the start's smooth part goes
+        // (`start_mean`, `start_slope`: the cell-level constants, or a located start's,
+        // `chain.rs`) and the limit of a slipping cell comes.
         let (mut km, mut ks) = (vec![0.0; n], vec![0.0; n]);
         for i in 0..n {
             (km[i], ks[i]) = match layout.roles[i] {
-                Role::Out => (-self.traction[i], 0.0),
+                Role::Out => (-self.start_mean[i], -self.start_slope[i]),
                 Role::Slip(s) => (
-                    s * self.limit_mean[i] - self.traction[i],
-                    s * self.limit_slope[i],
+                    s * self.limit_mean[i] - self.start_mean[i],
+                    s * self.limit_slope[i] - self.start_slope[i],
                 ),
                 Role::Free | Role::Element => (0.0, 0.0),
             };
@@ -167,11 +172,34 @@ impl Marcher {
                         xi + 0.5 * w,
                         Shape::Affine {
                             centre: xi,
-                            value: self.traction[i],
-                            slope: 0.0,
+                            value: self.start_mean[i],
+                            slope: self.start_slope[i],
                         },
                     ),
                     coefficient: -1.0,
+                });
+            }
+        }
+        // A located start's exact pieces go where the cell does not stay stuck, and its kink at
+        // a boundary comes back on the element (`chain.rs`).
+        let start = self.stretch.as_ref().map(|s| &s.start);
+        let pieces: Vec<Piece> = start.map_or(Vec::new(), |m| m.pieces.clone());
+        let held: Vec<f64> = layout
+            .ends
+            .iter()
+            .map(|e| start.map_or(0.0, |m| m.kink_at(e.at, e.side, w)))
+            .collect();
+        for p in pieces.iter().filter(|p| layout.roles[p.cell] != Role::Free) {
+            known.push(Known {
+                element: p.element.clone(),
+                coefficient: -p.coefficient,
+            });
+        }
+        for (e, &amplitude) in layout.ends.iter().zip(&held) {
+            if amplitude != 0.0 {
+                known.push(Known {
+                    element: Self::element_root(e),
+                    coefficient: amplitude,
                 });
             }
         }
@@ -259,7 +287,11 @@ impl Marcher {
             a[m * size + q] = unknown[q].integral(w) - w * sum(&ws[q]);
         }
         a[m * size + m] = -w * sum(&v);
-        let old: f64 = w * (self.traction.iter().sum::<f64>() + km.iter().sum::<f64>())
+        let old: f64 = w * (self.start_mean.iter().sum::<f64>() + km.iter().sum::<f64>())
+            + pieces
+                .iter()
+                .map(|p| p.coefficient * p.element.moment(0, 0.0))
+                .sum::<f64>()
             + known
                 .iter()
                 .map(|k| k.coefficient * k.element.moment(0, 0.0))
@@ -284,7 +316,10 @@ impl Marcher {
             }
         }
         self.shift = c;
-        self.increments(layout, &unknown, specials, &slopes, &z);
+        self.increments(layout, &unknown, specials, &slopes, &held, &z);
+        let start = self.stretch.as_ref().map(|s| &s.start);
+        self.end_model =
+            Some(self.located_model(layout, &unknown, specials, &slopes, &held, &z, start));
         // Displacement at every centre, for the slips: G dq.
         let mut g_free = vec![0.0; n];
         apply(&mut self.kernel, &self.dense, &z, &mut g_free);
@@ -316,7 +351,7 @@ impl Marcher {
             let p = self.pressure_at(e.at)?;
             out.push(EndSolution {
                 constant: specials[2 * j],
-                amplitude: specials[2 * j + 1],
+                amplitude: specials[2 * j + 1] + held[j],
                 jump: e.sign * q - f * p,
             });
         }
@@ -435,6 +470,7 @@ impl Marcher {
         unknown: &[Special],
         specials: &[f64],
         slopes: &[f64],
+        held: &[f64],
         z: &[f64],
     ) {
         let f = self.friction;
@@ -458,7 +494,10 @@ impl Marcher {
                         .expect("an element cell belongs to a boundary");
                     // The element's constant with the roots on the stick side, the limit beyond.
                     let q_new = if e.side * (xi - e.at) < 0.0 {
-                        specials[2 * q] + slopes[q] * (xi - e.at) + roots_at(xi)
+                        specials[2 * q]
+                            + slopes[q] * (xi - e.at)
+                            + roots_at(xi)
+                            + held[q] * Self::element_root(e).value(xi)
                     } else {
                         e.sign * f * self.pressure[i]
                     };
@@ -466,6 +505,20 @@ impl Marcher {
                 }
             };
         }
+    }
+
+    /// The square root of boundary `e` on its element only (unit amplitude).
+    pub(super) fn element_root(e: &super::layout::SoftEnd) -> Element {
+        let [lo, hi] = e.support;
+        Element::new(
+            lo,
+            hi,
+            Shape::Root {
+                at: e.at,
+                side: e.side,
+                window: e.window,
+            },
+        )
     }
 
     /// The slope of the limit `s f p` across boundary `e`'s element (the secant over its
@@ -478,7 +531,7 @@ impl Marcher {
 
     /// The limit `s f p` on `[lo, hi]` inside cell `i` as `[value at the midpoint, slope]`, with
     /// its exact mean and first moment (`moments.rs`).
-    fn limit_fit(&self, i: usize, sign: f64, lo: f64, hi: f64) -> [f64; 2] {
+    pub(super) fn limit_fit(&self, i: usize, sign: f64, lo: f64, hi: f64) -> [f64; 2] {
         let len = hi - lo;
         if len <= 0.0 {
             return [0.0; 2];

@@ -212,6 +212,16 @@ impl Element {
         }
     }
 
+    /// Where the element is: `[lo, hi]`.
+    pub(super) fn range(&self) -> [f64; 2] {
+        [self.lo, self.hi]
+    }
+
+    /// The same shape on `[lo, hi]`, inside this element's range.
+    pub(super) fn clipped(&self, lo: f64, hi: f64) -> Self {
+        Self::new(lo, hi, self.shape)
+    }
+
     /// `integral shape (xi - about)^k dxi` over the element, k = 0 or 1.
     pub(super) fn moment(&self, k: usize, about: f64) -> f64 {
         let mid = 0.5 * (self.lo + self.hi);

@@ -68,7 +68,7 @@ pub struct Marcher {
     pub(super) limit_slope: Vec<f64>,
     pub(super) shape: PressureShape,
     pub(super) slip: Vec<f64>,
-    slip_increment: Vec<f64>,
+    pub(super) slip_increment: Vec<f64>,
     /// Sum of |slip| over the sub-steps of the current increment (for the stick/slip labels).
     pub(super) slip_travel: Vec<f64>,
     /// Slip of the current sub-step.
@@ -100,6 +100,16 @@ pub struct Marcher {
     pub(super) view: Option<super::boundary::View>,
     /// The kinks as reported after the last increment.
     pub(super) reported_kinks: Vec<super::boundary::TractionKink>,
+    /// The last increment's located solution and the stretch the located solves start from
+    /// (`chain.rs`).
+    pub(super) located: Option<super::chain::Model>,
+    pub(super) stretch: Option<super::chain::Stretch>,
+    /// A located solve's start (the smooth part's cell means and slopes) and end (the smooth
+    /// part and the pieces; `evaluate.rs`).
+    pub(super) start_mean: Vec<f64>,
+    pub(super) start_slope: Vec<f64>,
+    #[allow(clippy::type_complexity)]
+    pub(super) end_model: Option<(Vec<f64>, Vec<f64>, Vec<super::chain::Piece>)>,
     // Work buffers, reused by every increment.
     pub(super) known: Vec<f64>,
     /// `G known` of the last pass (`dissipation.rs` reuses it).
@@ -206,6 +216,11 @@ impl Marcher {
             shift: 0.0,
             view: None,
             reported_kinks: Vec::new(),
+            located: None,
+            stretch: None,
+            start_mean: zeros.clone(),
+            start_slope: zeros.clone(),
+            end_model: None,
             known: zeros.clone(),
             g_known: zeros.clone(),
             dq: zeros.clone(),

@@ -26,6 +26,8 @@ impl Marcher {
     /// moving edges of a changing load are the profile's normal problem's).
     pub(crate) fn set_gap(&mut self, gap: Vec<f64>) {
         let solution = self.gap.take().and_then(|g| g.solution);
+        // The located boundaries stop here (`marcher.rs`), and with them their chain.
+        (self.located, self.stretch) = (None, None);
         self.gap = Some(Gap {
             gap,
             solution,
@@ -104,6 +106,7 @@ impl Marcher {
         // What the fields report is now the sliding traction, with no stick-slip boundary.
         self.view = None;
         self.reported_kinks.clear();
+        (self.located, self.stretch) = (None, None);
         let mut energy = 0.0;
         for i in 0..self.x.len() {
             if self.cells[i] == Cell::Out {

@@ -1,0 +1,300 @@
+//! Where a located solve starts (`docs/convergence.md`, "Sub-cell stick-slip boundaries"): the
+//! cell-level state at the increment's last sub-step, or, through a stretch of the history in
+//! which the slip zones only grow, the located solution at the stretch's start.
+//!
+//! At the extreme of a constant-amplitude cycle the new stick-slip boundary lands where the last
+//! half's was, and the stick zone next to it still holds that half's traction, kink included.
+//! Started from the cell-level state, the located solve inherited that kink at a cell edge, up
+//! to half a cell from where it is, and put the new boundary 0.13 cells off (1.1e-2 p0 in the
+//! surface stress at 1600 cells). Started from the located solution of the last increment at
+//! every increment, the solves' errors next to their boundaries accumulated instead: each
+//! increment's square root stays in the stick zone's traction where the exact increment would
+//! cancel it once its boundary has receded (4e-4 f p0 more per increment at 400 cells).
+//!
+//! So a located solve starts from a located solution only across a *stretch*: increments at an
+//! unchanged pressure in which no slipping cell sticks again or turns, the cell-level record of
+//! a half-cycle. Within a stretch every stuck cell stuck throughout and every slipping cell
+//! ends at the limit, so one solve from the stretch's start to the current load is exact (the
+//! path does not matter, as for Cattaneo loaded in one increment). A stretch starts from the
+//! last increment's located solution when each of its boundaries is then held inside a stick
+//! zone (a reversal: its kinks are real and locked in); otherwise the located solve starts from
+//! the cell-level state, as it always did.
+//!
+//! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
+//! and slope), exact pieces near each boundary (the element's affine parts, each root within
+//! `NEAR` cells), and the boundaries' kinks with their whole amplitudes. A boundary element
+//! replaces its cells' start; a kink of the start at the element's boundary goes back on the
+//! element as its square root (`evaluate.rs`), or an increment with no change of load moved the
+//! traction next to the boundary by 1.4e-3 f p0.
+//!
+//! The cell-level state itself, and so the active set, the slips, the energy and the cycles'
+//! repetition, never sees any of it. Owns the located solutions' model and the stretch. Never
+//! solves anything.
+
+use super::evaluate::Special;
+use super::kernel::{Element, Shape};
+use super::layout::{Layout, Role};
+use super::marcher::{Cell, Marcher};
+use crate::load::LoadPoint;
+
+/// Most exact pieces one cell keeps; beyond, the oldest is kept by its mean and slope only. A
+/// cell that stays stuck through many half-cycles gathers a root piece per half.
+const PIECES_PER_CELL: usize = 8;
+
+/// A kink of the start is put back on an element whose boundary is within this many cells.
+const SAME_KINK: f64 = 0.5;
+
+/// One exact part of the traction in one cell: `coefficient` times `element`'s shape.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Piece {
+    pub cell: usize,
+    pub element: Element,
+    pub coefficient: f64,
+}
+
+/// A stick-slip boundary's square root in a located solution, with its whole amplitude.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Kink {
+    pub x: f64,
+    /// Its stick side: 1 to the left of `x`, -1 to the right.
+    pub side: f64,
+    pub amplitude: f64,
+}
+
+/// A located solution as the solve models it.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Model {
+    /// The traction at each centre (what is reported).
+    pub centre: Vec<f64>,
+    /// The smooth part: each cell's mean and slope (first moment about the centre times
+    /// `12/w^3`).
+    pub mean: Vec<f64>,
+    pub slope: Vec<f64>,
+    /// The exact pieces, each inside its cell.
+    pub pieces: Vec<Piece>,
+    pub kinks: Vec<Kink>,
+    /// The load and the pressure it was solved for.
+    pub load: LoadPoint,
+    pub pressure: Vec<f64>,
+}
+
+impl Model {
+    /// The amplitude of the kink nearest a boundary at `at` with stick side `side`, within
+    /// [`SAME_KINK`] cells; zero without one.
+    pub(super) fn kink_at(&self, at: f64, side: f64, width: f64) -> f64 {
+        self.kinks
+            .iter()
+            .filter(|k| k.side == side && (k.x - at).abs() < SAME_KINK * width)
+            .min_by(|a, b| (a.x - at).abs().total_cmp(&(b.x - at).abs()))
+            .map_or(0.0, |k| k.amplitude)
+    }
+}
+
+/// A stretch: its start, and the direction in which each cell has slipped since (0: stuck).
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Stretch {
+    pub start: Model,
+    pub slipped: Vec<f64>,
+}
+
+impl Marcher {
+    /// The stretch the current increment continues, or the one it starts from the last located
+    /// solution, or `None` (the located solve starts from the cell level). `sub_slip` is the
+    /// cell-level slip of the increment's last sub-step, not yet added to the state.
+    pub(super) fn stretch_for(&mut self, sub_slip: &[f64]) -> Option<Stretch> {
+        let w = self.width;
+        // This increment's slip direction per cell: 0 stuck, NaN when it turned within it.
+        let turned = f64::NAN;
+        let moved: Vec<f64> = (0..self.x.len())
+            .map(|i| {
+                let travel = self.slip_travel[i] + sub_slip[i].abs();
+                let net = self.slip_increment[i] + sub_slip[i];
+                if travel == 0.0 {
+                    0.0
+                } else if net.abs() < travel * (1.0 - 1e-9) {
+                    turned
+                } else {
+                    net.signum()
+                }
+            })
+            .collect();
+        let grows = |slipped: &[f64]| {
+            self.cells
+                .iter()
+                .zip(slipped.iter().zip(&moved))
+                .all(|(c, (s, m))| {
+                    !m.is_nan()
+                        && match *s {
+                            0.0 => true,
+                            s => (*m == s || *m == 0.0) && *c == Cell::Slip(s),
+                        }
+                })
+        };
+        if let Some(mut stretch) = self.stretch.take() {
+            if stretch.start.pressure == self.pressure && grows(&stretch.slipped) {
+                for (s, m) in stretch.slipped.iter_mut().zip(&moved) {
+                    if *s == 0.0 {
+                        *s = *m;
+                    }
+                }
+                return Some(stretch);
+            }
+        }
+        let last = self.located.take()?;
+        let zones = super::layout::zones_of(&self.cells, &self.x, w);
+        let held = last.kinks.iter().all(|k| {
+            zones
+                .iter()
+                .any(|z| self.x[z.first] - 0.5 * w + w < k.x && k.x < self.x[z.last] + 0.5 * w - w)
+        });
+        if last.pressure != self.pressure || last.kinks.is_empty() || !held {
+            return None;
+        }
+        let mut slipped = vec![0.0; self.x.len()];
+        if !grows(&slipped) {
+            return None;
+        }
+        slipped.copy_from_slice(&moved);
+        Some(Stretch {
+            start: last,
+            slipped,
+        })
+    }
+
+    /// The kinks of a located solution on `layout`: the `new` boundaries', and those of the
+    /// stretch's start that its stick zones still hold away from them.
+    pub(super) fn kept_kinks(&self, layout: &Layout, new: impl Iterator<Item = Kink>) -> Vec<Kink> {
+        let w = self.width;
+        let mut kinks: Vec<Kink> = self.stretch.as_ref().map_or(Vec::new(), |s| {
+            s.start
+                .kinks
+                .iter()
+                .filter(|k| {
+                    layout.zones.iter().any(|z| z[0] < k.x && k.x < z[1])
+                        && !layout
+                            .ends
+                            .iter()
+                            .any(|e| (e.at - k.x).abs() < SAME_KINK * w)
+                })
+                .copied()
+                .collect()
+        });
+        kinks.extend(new);
+        kinks
+    }
+
+    /// The model of the traction a located solve on `layout` ends with: on free cells the
+    /// start's smooth part plus the cell's constant `z` and the roots beyond their near parts by
+    /// means and slopes, the start's pieces kept and each root's near part as pieces; on
+    /// slipping cells the limit by its mean and slope (as the solve has it); on each boundary's
+    /// cells its element's constant and ramp, the start's kink put back (`held`) and the roots
+    /// on the stick side, and the limit's fit on the slip side, all as pieces; zero out of
+    /// contact. `unknown` and `specials` are the solve's shapes and values (per boundary, the
+    /// element's constant and the root), `slopes` the elements' ramps, `centre` the reported
+    /// centre values.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn located_model(
+        &self,
+        layout: &Layout,
+        unknown: &[Special],
+        specials: &[f64],
+        slopes: &[f64],
+        held: &[f64],
+        z: &[f64],
+        start: Option<&Model>,
+    ) -> (Vec<f64>, Vec<f64>, Vec<Piece>) {
+        let n = self.x.len();
+        let w = self.width;
+        let edge0 = self.x[0] - 0.5 * w;
+        let (mut mean, mut slope) = (vec![0.0; n], vec![0.0; n]);
+        for i in 0..n {
+            (mean[i], slope[i]) = match layout.roles[i] {
+                Role::Out | Role::Element => (0.0, 0.0),
+                Role::Slip(s) => (s * self.limit_mean[i], s * self.limit_slope[i]),
+                Role::Free => (self.start_mean[i] + z[i], self.start_slope[i]),
+            };
+        }
+        let mut pieces: Vec<Piece> = start.map_or(Vec::new(), |m| {
+            m.pieces
+                .iter()
+                .filter(|p| layout.roles[p.cell] == Role::Free)
+                .cloned()
+                .collect()
+        });
+        let mut add = |element: Element, coefficient: f64| {
+            let [lo, hi] = element.range();
+            if hi <= lo || coefficient == 0.0 {
+                return;
+            }
+            let first = (((lo - edge0) / w).floor().max(0.0) as usize).min(n - 1);
+            for cell in first..n {
+                let (cl, ch) = (self.x[cell] - 0.5 * w, self.x[cell] + 0.5 * w);
+                if cl >= hi {
+                    break;
+                }
+                let (a, b) = (cl.max(lo), ch.min(hi));
+                if b > a {
+                    pieces.push(Piece {
+                        cell,
+                        element: element.clipped(a, b),
+                        coefficient,
+                    });
+                }
+            }
+        };
+        for (q, e) in layout.ends.iter().enumerate() {
+            let root = &unknown[2 * q + 1];
+            let amplitude = specials[2 * q + 1];
+            add(root.near.clone(), amplitude);
+            if let Some((m, s)) = &root.far {
+                for i in 0..n {
+                    mean[i] += amplitude * m[i];
+                    slope[i] += amplitude * s[i];
+                }
+            }
+            let [lo, hi] = e.support;
+            let stick = Shape::Affine {
+                centre: e.at,
+                value: specials[2 * q],
+                slope: slopes[q],
+            };
+            add(Element::new(lo, hi, stick), 1.0);
+            add(Self::element_root(e), held[q]);
+            let [lo, hi] = e.slip_part;
+            if hi > lo {
+                let [value, s] = self.limit_fit(e.cell, e.sign, lo, hi);
+                let limit = Shape::Affine {
+                    centre: 0.5 * (lo + hi),
+                    value,
+                    slope: s,
+                };
+                add(Element::new(lo, hi, limit), 1.0);
+            }
+        }
+        self.fold_oldest(&mut pieces, &mut mean, &mut slope);
+        (mean, slope, pieces)
+    }
+
+    /// Keeps at most [`PIECES_PER_CELL`] pieces per cell: the oldest beyond go into the cell's
+    /// mean and slope.
+    fn fold_oldest(&self, pieces: &mut Vec<Piece>, mean: &mut [f64], slope: &mut [f64]) {
+        let w = self.width;
+        let mut count = vec![0usize; self.x.len()];
+        for p in pieces.iter() {
+            count[p.cell] += 1;
+        }
+        if count.iter().all(|c| *c <= PIECES_PER_CELL) {
+            return;
+        }
+        pieces.retain(|p| {
+            if count[p.cell] <= PIECES_PER_CELL {
+                return true;
+            }
+            count[p.cell] -= 1;
+            let xc = self.x[p.cell];
+            mean[p.cell] += p.coefficient * p.element.moment(0, xc) / w;
+            slope[p.cell] += p.coefficient * 12.0 * p.element.moment(1, xc) / (w * w * w);
+            false
+        });
+    }
+}
