@@ -190,8 +190,8 @@ impl Marcher {
     /// cells its element's constant and ramp, the start's kink put back (`held`) and the roots
     /// on the stick side, and the limit's fit on the slip side, all as pieces; zero out of
     /// contact. `unknown` and `specials` are the solve's shapes and values (per boundary, the
-    /// element's constant and the root), `slopes` the elements' ramps, `centre` the reported
-    /// centre values.
+    /// element's constant and the root), `slopes` the elements' ramps, `start` the stretch's
+    /// start (`None`: the cell-level state, whose model is `start_mean` alone).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn located_model(
         &self,
