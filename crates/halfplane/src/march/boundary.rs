@@ -89,25 +89,23 @@ impl Marcher {
         );
         // Where the located solve starts (`chain.rs`): a stretch's located start, over the
         // load change since it, or the cell-level state at this sub-step.
-        self.stretch = self.stretch_for(&saved.1);
+        // A slip below rounding is no slip (as for the active set's reversals, `marcher.rs`).
+        let rounding = 1e-13 * self.compliance * self.friction * load.normal();
+        self.stretch = self.stretch_for(&saved.1, rounding);
         let cell_level = self.traction.clone();
-        let d_sigma = match &self.stretch {
-            Some(s) => {
-                self.traction.copy_from_slice(&s.start.centre);
-                self.start_mean.copy_from_slice(&s.start.mean);
-                self.start_slope.copy_from_slice(&s.start.slope);
-                load.bulk() - s.start.load.bulk()
-            }
-            None => {
-                self.start_mean.copy_from_slice(&cell_level);
-                self.start_slope.fill(0.0);
-                d_sigma
-            }
+        let mut solves = self.located_from(&cell_level, d_sigma, load, step)?;
+        if self.stretch.is_some() && self.start_kink_in_an_element() {
+            // The stretch's start holds a kink inside a new boundary's element, which replaces
+            // its cells' start: this increment is solved from the cell level (the stretch goes
+            // on for the next).
+            let stretch = self.stretch.take();
+            solves += self.located_from(&cell_level, d_sigma, load, step)?;
+            self.stretch = stretch;
+        }
+        let start = match &self.stretch {
+            Some(s) if self.start_used => s.start.centre.clone(),
+            _ => cell_level,
         };
-        self.layout = None;
-        let solves = self.located_solve(d_sigma, load.shear(), step);
-        let start = std::mem::replace(&mut self.traction, cell_level);
-        let solves = solves?;
         self.located = None;
         if let (Some(lay), Some((mean, slope, pieces))) =
             (self.layout.take(), self.end_model.take())
@@ -143,12 +141,58 @@ impl Marcher {
                 load,
                 pressure: self.pressure.clone(),
             });
-            if !lay.ends.is_empty() || self.stretch.is_some() {
+            if !lay.ends.is_empty() || self.start_used {
                 self.view = Some(View { traction, kinks });
             }
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
         Ok(solves)
+    }
+
+    /// The located solve of the increment from the stretch's start (over the load change since
+    /// it) or, without one, from `cell_level` (the cell-level state at the last sub-step, whose
+    /// tension change is `d_sigma`). Leaves `traction` as it found it (`cell_level`) and sets
+    /// `start_used`. Returns the solves used.
+    fn located_from(
+        &mut self,
+        cell_level: &[f64],
+        d_sigma: f64,
+        load: LoadPoint,
+        step: usize,
+    ) -> Result<usize> {
+        let d_sigma = match &self.stretch {
+            Some(s) => {
+                self.traction.copy_from_slice(&s.start.centre);
+                self.start_mean.copy_from_slice(&s.start.mean);
+                self.start_slope.copy_from_slice(&s.start.slope);
+                load.bulk() - s.start.load.bulk()
+            }
+            None => {
+                self.start_mean.copy_from_slice(cell_level);
+                self.start_slope.fill(0.0);
+                d_sigma
+            }
+        };
+        self.start_used = self.stretch.is_some();
+        self.layout = None;
+        let solves = self.located_solve(d_sigma, load.shear(), step);
+        self.traction.copy_from_slice(cell_level);
+        solves
+    }
+
+    /// Whether a kink of the stretch's start lies within two cells of a new boundary without
+    /// being the one that boundary takes over (`chain.rs`, [`super::chain::Model::kink_at`]).
+    fn start_kink_in_an_element(&self) -> bool {
+        let (Some(s), Some(lay)) = (&self.stretch, &self.layout) else {
+            return false;
+        };
+        let w = self.width;
+        lay.ends.iter().any(|e| {
+            s.start.kinks.iter().any(|k| {
+                let d = (k.x - e.at).abs();
+                d < 2.0 * w && !(k.side == e.side && d < super::chain::SAME_KINK * w)
+            })
+        })
     }
 
     /// [`Marcher::refine`]; from a stretch's located start with no boundary to locate, the

@@ -104,6 +104,8 @@ pub struct Marcher {
     /// (`chain.rs`).
     pub(super) located: Option<super::chain::Model>,
     pub(super) stretch: Option<super::chain::Stretch>,
+    /// Whether the last located solve started from the stretch's start.
+    pub(super) start_used: bool,
     /// A located solve's start (the smooth part's cell means and slopes) and end (the smooth
     /// part and the pieces; `evaluate.rs`).
     pub(super) start_mean: Vec<f64>,
@@ -218,6 +220,7 @@ impl Marcher {
             reported_kinks: Vec::new(),
             located: None,
             stretch: None,
+            start_used: false,
             start_mean: zeros.clone(),
             start_slope: zeros.clone(),
             end_model: None,
