@@ -94,23 +94,25 @@ impl Marcher {
         self.stretch = self.stretch_for(&saved.1, rounding);
         let cell_level = self.traction.clone();
         let mut solves = self.located_from(&cell_level, d_sigma, load, step)?;
-        if self.stretch.is_some() && self.start_kink_in_an_element() {
+        let mut from_start = self.stretch.is_some();
+        if from_start && self.start_kink_in_an_element() {
             // The stretch's start holds a kink inside a new boundary's element, which replaces
             // its cells' start: this increment is solved from the cell level (the stretch goes
             // on for the next).
             let stretch = self.stretch.take();
             solves += self.located_from(&cell_level, d_sigma, load, step)?;
             self.stretch = stretch;
+            from_start = false;
         }
-        let start = match &self.stretch {
-            Some(s) if self.start_used => s.start.centre.clone(),
-            _ => cell_level,
-        };
         self.located = None;
-        if let (Some(lay), Some((mean, slope, pieces))) =
-            (self.layout.take(), self.end_model.take())
-        {
-            let traction: Vec<f64> = start.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
+        if let (Some(lay), Some(cells)) = (self.layout.take(), self.end_model.take()) {
+            let start = self
+                .stretch
+                .as_ref()
+                .filter(|_| from_start)
+                .map(|s| &s.start);
+            let base = start.map_or(&cell_level, |s| &s.centre);
+            let traction: Vec<f64> = base.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
             let mut kinks = Vec::with_capacity(lay.ends.len());
             for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
                 let pressure = self.pressure_at(e.at)?;
@@ -131,17 +133,15 @@ impl Marcher {
                 side: e.side,
                 amplitude: k.amplitude,
             });
-            let kept = self.kept_kinks(&lay, new);
+            let kept = self.kept_kinks(&lay, start, new);
             self.located = Some(Model {
                 centre: traction.clone(),
-                mean,
-                slope,
-                pieces,
+                cells,
                 kinks: kept,
                 load,
                 pressure: self.pressure.clone(),
             });
-            if !lay.ends.is_empty() || self.start_used {
+            if !lay.ends.is_empty() || from_start {
                 self.view = Some(View { traction, kinks });
             }
         }
@@ -151,8 +151,8 @@ impl Marcher {
 
     /// The located solve of the increment from the stretch's start (over the load change since
     /// it) or, without one, from `cell_level` (the cell-level state at the last sub-step, whose
-    /// tension change is `d_sigma`). Leaves `traction` as it found it (`cell_level`) and sets
-    /// `start_used`. Returns the solves used.
+    /// tension change is `d_sigma`). Leaves `traction` as it found it (`cell_level`). Returns
+    /// the solves used.
     fn located_from(
         &mut self,
         cell_level: &[f64],
@@ -163,8 +163,8 @@ impl Marcher {
         let d_sigma = match &self.stretch {
             Some(s) => {
                 self.traction.copy_from_slice(&s.start.centre);
-                self.start_mean.copy_from_slice(&s.start.mean);
-                self.start_slope.copy_from_slice(&s.start.slope);
+                self.start_mean.copy_from_slice(&s.start.cells.mean);
+                self.start_slope.copy_from_slice(&s.start.cells.slope);
                 load.bulk() - s.start.load.bulk()
             }
             None => {
@@ -173,7 +173,6 @@ impl Marcher {
                 d_sigma
             }
         };
-        self.start_used = self.stretch.is_some();
         self.layout = None;
         let solves = self.located_solve(d_sigma, load.shear(), step);
         self.traction.copy_from_slice(cell_level);

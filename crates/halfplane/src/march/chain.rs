@@ -69,12 +69,7 @@ pub(super) struct Kink {
 pub(super) struct Model {
     /// The traction at each centre (what is reported).
     pub centre: Vec<f64>,
-    /// The smooth part: each cell's mean and slope (first moment about the centre times
-    /// `12/w^3`).
-    pub mean: Vec<f64>,
-    pub slope: Vec<f64>,
-    /// The exact pieces, each inside its cell.
-    pub pieces: Vec<Piece>,
+    pub cells: Cells,
     pub kinks: Vec<Kink>,
     /// The load and the pressure it was solved for.
     pub load: LoadPoint,
@@ -91,6 +86,17 @@ impl Model {
             .min_by(|a, b| (a.x - at).abs().total_cmp(&(b.x - at).abs()))
             .map_or(0.0, |k| k.amplitude)
     }
+}
+
+/// A located solution's cells as the solve models them.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Cells {
+    /// The smooth part: each cell's mean and slope (first moment about the centre times
+    /// `12/w^3`).
+    pub mean: Vec<f64>,
+    pub slope: Vec<f64>,
+    /// The exact pieces, each inside its cell.
+    pub pieces: Vec<Piece>,
 }
 
 /// A stretch: its start, and the direction in which each cell has slipped since (0: stuck).
@@ -166,15 +172,18 @@ impl Marcher {
         })
     }
 
-    /// The kinks of a located solution on `layout`: the `new` boundaries', and, when it was
-    /// solved from the stretch's start, those of the start that its stick zones still hold away
+    /// The kinks of a located solution on `layout`: the `new` boundaries', and those of its
+    /// `start` (a stretch's, or `None` from the cell level) that its stick zones still hold away
     /// from them.
-    pub(super) fn kept_kinks(&self, layout: &Layout, new: impl Iterator<Item = Kink>) -> Vec<Kink> {
+    pub(super) fn kept_kinks(
+        &self,
+        layout: &Layout,
+        start: Option<&Model>,
+        new: impl Iterator<Item = Kink>,
+    ) -> Vec<Kink> {
         let w = self.width;
-        let start = self.stretch.as_ref().filter(|_| self.start_used);
         let mut kinks: Vec<Kink> = start.map_or(Vec::new(), |s| {
-            s.start
-                .kinks
+            s.kinks
                 .iter()
                 .filter(|k| {
                     layout.zones.iter().any(|z| z[0] < k.x && k.x < z[1])
@@ -209,7 +218,7 @@ impl Marcher {
         held: &[f64],
         z: &[f64],
         start: Option<&Model>,
-    ) -> (Vec<f64>, Vec<f64>, Vec<Piece>) {
+    ) -> Cells {
         let n = self.x.len();
         let w = self.width;
         let edge0 = self.x[0] - 0.5 * w;
@@ -222,7 +231,8 @@ impl Marcher {
             };
         }
         let mut pieces: Vec<Piece> = start.map_or(Vec::new(), |m| {
-            m.pieces
+            m.cells
+                .pieces
                 .iter()
                 .filter(|p| layout.roles[p.cell] == Role::Free)
                 .cloned()
@@ -279,7 +289,11 @@ impl Marcher {
             }
         }
         self.fold_oldest(&mut pieces, &mut mean, &mut slope);
-        (mean, slope, pieces)
+        Cells {
+            mean,
+            slope,
+            pieces,
+        }
     }
 
     /// Keeps at most [`PIECES_PER_CELL`] pieces per cell: the oldest beyond go into the cell's

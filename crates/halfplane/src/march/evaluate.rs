@@ -95,8 +95,8 @@ impl Marcher {
     /// Solves the current sub-step on `layout` (tension change `d_sigma`, total shear `shear`)
     /// from the start whose centre values are `traction`, whose smooth part has the cell means
     /// and slopes `start_mean` and `start_slope`, and, from a located start (`chain.rs`), its
-    /// pieces and kinks. Writes `dq` (centre values), `end_model` (the smooth part and the
-    /// pieces at the end), `sub_slip`, `known` and `g_known` (for `dissipation.rs`) and the
+    /// pieces and kinks. Writes `dq` (centre values), `end_model` (the model's cells at the
+    /// end), `sub_slip`, `known` and `g_known` (for `dissipation.rs`) and the
     /// rigid shift; returns the solution at each boundary.
     pub(super) fn evaluate(
         &mut self,
@@ -183,12 +183,16 @@ impl Marcher {
         // A located start's exact pieces go where the cell does not stay stuck, and its kink at
         // a boundary comes back on the element (`chain.rs`).
         let start = self.stretch.as_ref().map(|s| &s.start);
-        let pieces: Vec<Piece> = start.map_or(Vec::new(), |m| m.pieces.clone());
+        let pieces: &[Piece] = start.map_or(&[], |m| &m.cells.pieces);
         let held: Vec<f64> = layout
             .ends
             .iter()
             .map(|e| start.map_or(0.0, |m| m.kink_at(e.at, e.side, w)))
             .collect();
+        let pieces_resultant: f64 = pieces
+            .iter()
+            .map(|p| p.coefficient * p.element.moment(0, 0.0))
+            .sum();
         for p in pieces.iter().filter(|p| layout.roles[p.cell] != Role::Free) {
             known.push(Known {
                 element: p.element.clone(),
@@ -288,10 +292,7 @@ impl Marcher {
         }
         a[m * size + m] = -w * sum(&v);
         let old: f64 = w * (self.start_mean.iter().sum::<f64>() + km.iter().sum::<f64>())
-            + pieces
-                .iter()
-                .map(|p| p.coefficient * p.element.moment(0, 0.0))
-                .sum::<f64>()
+            + pieces_resultant
             + known
                 .iter()
                 .map(|k| k.coefficient * k.element.moment(0, 0.0))
@@ -497,7 +498,11 @@ impl Marcher {
                         specials[2 * q]
                             + slopes[q] * (xi - e.at)
                             + roots_at(xi)
-                            + held[q] * Self::element_root(e).value(xi)
+                            + if held[q] == 0.0 {
+                                0.0
+                            } else {
+                                held[q] * Self::element_root(e).value(xi)
+                            }
                     } else {
                         e.sign * f * self.pressure[i]
                     };

@@ -104,14 +104,11 @@ pub struct Marcher {
     /// (`chain.rs`).
     pub(super) located: Option<super::chain::Model>,
     pub(super) stretch: Option<super::chain::Stretch>,
-    /// Whether the last located solve started from the stretch's start.
-    pub(super) start_used: bool,
-    /// A located solve's start (the smooth part's cell means and slopes) and end (the smooth
-    /// part and the pieces; `evaluate.rs`).
+    /// A located solve's start (the smooth part's cell means and slopes) and end (its cells'
+    /// model; `evaluate.rs`).
     pub(super) start_mean: Vec<f64>,
     pub(super) start_slope: Vec<f64>,
-    #[allow(clippy::type_complexity)]
-    pub(super) end_model: Option<(Vec<f64>, Vec<f64>, Vec<super::chain::Piece>)>,
+    pub(super) end_model: Option<super::chain::Cells>,
     // Work buffers, reused by every increment.
     pub(super) known: Vec<f64>,
     /// `G known` of the last pass (`dissipation.rs` reuses it).
@@ -220,7 +217,6 @@ impl Marcher {
             reported_kinks: Vec::new(),
             located: None,
             stretch: None,
-            start_used: false,
             start_mean: zeros.clone(),
             start_slope: zeros.clone(),
             end_model: None,

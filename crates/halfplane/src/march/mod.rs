@@ -50,9 +50,9 @@
 //! `solve.rs` (the stick cells' linear systems), `toeplitz/` (FFT products and exact inverses of
 //! stick runs), `marcher.rs` (the active set and the moving-edge sub-steps), `dissipation.rs` (the
 //! energy of a sub-step), `cycles.rs` (the driver, per-cycle slip ranges and shakedown), and for
-//! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs`, `boundary.rs` and `chain.rs`; `gap.rs`
-//! (the normal problem of a worn gap on the grid) and `worn.rs` (the march over a worn gap) serve
-//! wear. It never holds code of its own, only declarations and re-exports.
+//! the sub-cell boundaries `layout.rs`, `moments.rs`, `evaluate.rs`, `boundary.rs` and
+//! `chain.rs`; `gap.rs` (the normal problem of a worn gap on the grid) and `worn.rs` (the march
+//! over a worn gap) serve wear. It never holds code of its own, only declarations and re-exports.
 
 // Without the `sub-cell` feature nothing calls the located boundaries (`marcher.rs`).
 #[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]

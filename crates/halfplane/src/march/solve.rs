@@ -52,7 +52,7 @@ impl Marcher {
         let mut out = std::mem::take(&mut self.v);
         let runs = runs_of(set);
         let result = if let ([(s, e)], None) = (&runs[..], &self.dense) {
-            out.iter_mut().for_each(|v| *v = 0.0);
+            out.fill(0.0);
             self.kernel.solve_ones(&mut out[*s..*e]);
             Ok(())
         } else {
