@@ -132,16 +132,37 @@ fn cattaneo_traction_converges_monotonically_to_the_issues_targets() {
 #[test]
 fn cattaneo_in_thirty_increments_is_located_as_well() {
     // The same load in 30 increments after a 10-increment press (the convergence study's
-    // history): each increment's boundary is located from the cell-level state before it, which
-    // carries cell-level errors near the previous boundary a cell or two away. At 400 cells the
-    // last increment is 3.5e-4 f p0 off and its stick zone 0.01 cells (cell-level: 8.3e-3 and
-    // 0.58 cells); 1e-3 and 0.05 cells are the issue's targets.
+    // history). The slip zones only grow at a constant pressure, so the whole loading is one
+    // stretch from the pressed state (`march/chain.rs`) and every increment is located as
+    // Cattaneo in one increment: the path does not matter in exact theory, and the reported
+    // traction at the last increment equals the one-increment load's to rounding (measured
+    // 1.5e-4 f p0 from the closed form at 400 cells in both; the bound on their difference is
+    // far below that error and far above rounding). When each increment was solved from the
+    // cell-level state before it, the last was 3.5e-4 f p0 off; from the first located
+    // increment, 6.8e-5.
     let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
     rows.extend((1..=30).map(|i| [P, 300.0 * i as f64 / 30.0, 0.0]));
     let (r, kept) = run(&rows, 400);
     let (worst, edge) = cattaneo_errors(&r, &kept, 300.0);
     eprintln!("30 increments: max traction error {worst:.3e} f p0, stick edge {edge:.4} cells");
     assert!(worst <= 1e-3 && edge < 0.05, "{worst:e} f p0, {edge} cells");
+    let (_, once) = run(&[[P, 0.0, 0.0], [P, 300.0, 0.0]], 400);
+    let f_p0 = F * hertz(kept[0].0.half_width, 0.0);
+    let apart = kept
+        .last()
+        .unwrap()
+        .1
+        .traction
+        .iter()
+        .zip(&once.last().unwrap().1.traction)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+        / f_p0;
+    eprintln!("30 increments against one: {apart:.1e} f p0");
+    assert!(
+        apart < 1e-9,
+        "Cattaneo's traction depends on the path: {apart:e} f p0 between 30 increments and one"
+    );
 }
 
 /// `sxx` on the surface under Hertz pressure of half-width `a` and the shear
@@ -217,11 +238,14 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
     // 1.4e-2 p0 five cells inside the edge after the reversal. Three histories reach Q = 300 and
     // go back to 280: in one increment, in 30, and round the issue's cycle.
     //
-    // At Q = 300: at most 1.56e-3 p0 at c (30 increments; 5.6e-5 in one, 7.2e-4 round the
-    // cycle) and 2.4e-4 near. Round the cycle the state at Q = 300 is solved from the located
-    // state at Q = -300 (a stretch, `march/chain.rs`); solved from the cell-level state it was
-    // 1.14e-2 p0 at c, the old boundary's cell-level kink locked into the stick zone where the
-    // new boundary lands. The boundary element follows the limit's slope (with a constant alone,
+    // At Q = 300, every history: 5.6e-5 p0 at c and 1.1e-4 near. The first loading is one
+    // stretch from the pressed state and each half-cycle one from the last extreme's located
+    // state (`march/chain.rs`). Solved from the cell-level state at every increment, it was
+    // 1.14e-2 p0 at c round the cycle (the old boundary's cell-level kink locked into the stick
+    // zone where the new boundary lands) and 1.56e-3 in 30 increments; with the first loading
+    // started from its first located increment, 7.2e-4 round the cycle; the bound at c, 5e-4
+    // p0 (a quarter of the issue's target), fails all three. The boundary element
+    // follows the limit's slope (with a constant alone,
     // `c'` was 0.013 cells off next to the contact edge, 3.4e-3 p0 at `c'`) and the node form
     // carries each root over four cells (over one, 2.0-2.2e-3 p0 one cell inside the
     // boundaries); the bound near them is the issue's halved, so that a root over one cell
@@ -248,7 +272,7 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
     ] {
         let worst = mindlin_surface_error(rows);
         for (state, [on, near], [on_bound, near_bound]) in [
-            ("Q = 300", &worst[0], [2e-3, 1e-3]),
+            ("Q = 300", &worst[0], [5e-4, 1e-3]),
             ("after the reversal", &worst[1], [3e-3, 1e-3]),
         ] {
             eprintln!(
@@ -334,7 +358,8 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     // A dwell at the extreme: the cell-level solve leaves slips of 1e-19 on the slipping cells,
     // which once broke the stretch (a reviewer's case: 8.2e-3 f p0 at the second repeat, its
     // boundary 0.71 cells off). Measured 400 cells: the state at Q = -300 and its two repeats
-    // within 1.4e-4 f p0 of Cattaneo-Mindlin (the located traction's error at 400 cells).
+    // within 1.50e-4 f p0 of Cattaneo-Mindlin, the located traction's error at 400 cells. The
+    // bound fails a first loading whose stretch starts at its first located increment (2.3e-4).
     let dwell = issue_cycle(0, &{
         let mut tail: Vec<[f64; 3]> = (1..=30)
             .map(|i| [P, 300.0 - 600.0 * i as f64 / 30.0, 0.0])
@@ -347,10 +372,7 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     for step in [n - 2, n - 1, n] {
         let error = virgin_error(&kept, step, -300.0);
         eprintln!("dwell at Q = -300, increment {step}: {error:.2e} f p0");
-        assert!(
-            error < 2.5e-4,
-            "increment {step} of a dwell: {error:e} f p0"
-        );
+        assert!(error < 2e-4, "increment {step} of a dwell: {error:e} f p0");
     }
     // Variable amplitudes (40 reversals between 100 and 300, ten increments each), then beyond
     // every earlier peak to |Q| = 317, where the state is the virgin Cattaneo one again. Each
@@ -392,7 +414,7 @@ fn issue_cycle(cycles: usize, tail: &[[f64; 3]]) -> Vec<[f64; 3]> {
 }
 
 #[test]
-fn located_reports_leave_the_marched_state_alone_and_settle_over_cycles() {
+fn located_reports_leave_the_marched_state_alone_and_repeat_over_cycles() {
     // The located solutions are reported only (`march/chain.rs`): the slips, the energies and
     // the rigid displacement are the cell-level march's, to rounding (the located solves share
     // the solver's caches, the unit solve and the run generators, so the cell-level solves
@@ -400,12 +422,12 @@ fn located_reports_leave_the_marched_state_alone_and_settle_over_cycles() {
     // the largest slip, 1.7e-12 in the rigid displacement, which is a difference of larger
     // terms). That was so before the stretches too.
     //
-    // Each half-cycle's located solve starts from the last extreme's located state, so the
-    // reported traction at Q = 300 can change from cycle to cycle: measured 4.4e-5, 3.3e-5,
-    // 2.6e-5, 2.0e-5 f p0 over the first four cycles at 400 cells, shrinking by about a quarter
-    // a cycle as the boundary settles (by 0.003 cells in ten cycles); the bound keeps it
-    // shrinking and below the 1.5e-4 f p0 the traction is good to at 400 cells (Cattaneo,
-    // above).
+    // Each half-cycle's located solve starts from the last extreme's located state, and the
+    // first loading's from the pressed state: Mindlin's state at Q = 300 is the first loading's
+    // again at every cycle, and so is the located one, to rounding (measured 6.6e-13 to 6.5e-12
+    // f p0 over four cycles at 400 cells). When the first loading started from its first
+    // located increment, the extreme drifted by 4.4e-5, 3.3e-5, 2.6e-5, 2.0e-5 f p0 a cycle.
+    // The bound is a hundred times the rounding measured.
     let rows = issue_cycle(4, &[]);
     let (located, kept) = run(&rows, 400);
     let c = contact(Profile::hertz(RADIUS).unwrap());
@@ -455,8 +477,8 @@ fn located_reports_leave_the_marched_state_alone_and_settle_over_cycles() {
         .collect();
     eprintln!("change of the located traction at Q = 300 per cycle: {changes:?} f p0");
     assert!(
-        changes.windows(2).all(|w| w[1] < w[0]) && changes[0] < 1e-4,
-        "the located reports at the cycle's extreme do not settle: {changes:?}"
+        changes.iter().all(|c| *c < 1e-9),
+        "the located reports at the cycle's extreme do not repeat: {changes:?}"
     );
 }
 

@@ -393,6 +393,11 @@ impl Marcher {
             // carries no shear, which is the solution; nothing slips.
             self.sub_slip.fill(0.0);
             self.view = None;
+            if last && cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none() {
+                // The pressed state, stuck with no traction: where a first loading's stretch
+                // starts (`chain.rs`).
+                self.located = Some(self.stuck_model(vec![0.0; n], load));
+            }
             self.load = Some(load);
             self.state = Some(target);
             return Ok((0.0, 0));
