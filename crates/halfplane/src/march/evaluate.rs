@@ -164,7 +164,7 @@ impl Marcher {
                 ),
                 coefficient: 1.0,
             });
-            for i in std::iter::once(e.cell).chain(e.merged) {
+            for i in [e.cell, e.merged] {
                 let xi = self.x[i];
                 known.push(Known {
                     element: Element::new(
@@ -491,7 +491,7 @@ impl Marcher {
                         .ends
                         .iter()
                         .enumerate()
-                        .find(|(_, e)| e.cell == i || e.merged == Some(i))
+                        .find(|(_, e)| e.cell == i || e.merged == i)
                         .expect("an element cell belongs to a boundary");
                     // The element's constant with the roots on the stick side, the limit beyond.
                     let q_new = if e.side * (xi - e.at) < 0.0 {

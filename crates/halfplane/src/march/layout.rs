@@ -4,11 +4,19 @@
 //! boundaries").
 //!
 //! A stick zone whose end meets a slipping cell has that end at a point `at` inside a cell. The
-//! stick part of that cell, `[e, at]` (e its cell edge), carries one unknown constant collocated
-//! at its midpoint when it is at least half a cell long; a shorter one is merged with the
-//! neighbouring stick cell into one element collocated at that cell's centre, so that no two
-//! collocation points of a boundary come closer than a quarter cell (closer ones made the
-//! system singular in the prototype). The slip part `[at, e']` carries the limit traction.
+//! stick part of that cell, `[e, at]` (e its cell edge), and the neighbouring stick cell form
+//! the boundary element, one unknown constant collocated half a cell from `at`, between one and
+//! two cells long. The slip part `[at, e']` carries the limit traction.
+//!
+//! Why always merged and collocated there: the located boundary's error is a function of where
+//! `at` falls in its cell, and it vanishes where the element is one whole cell collocated at its
+//! centre. With the stick part alone as the element from half a cell up (collocated at its
+//! midpoint) and merged below (collocated at the neighbour's centre), `at` was off by up to
+//! 7e-4 cells, with a jump where the two met; always merged and collocated half a cell from
+//! `at`, the collocation points keep the spacing of whole cells next to the boundary and `at`
+//! is off by at most 2.4e-4 cells (Cattaneo, 1600 cells, the boundary swept over four cells;
+//! docs/convergence.md). Collocated half a cell from `at`, the stick part alone (shorter than
+//! a cell) put its point on or near the element's end, and `at` went up to 9e-3 cells off.
 //!
 //! Owns the geometry of a layout only. Never solves anything.
 
@@ -39,10 +47,10 @@ pub(super) struct SoftEnd {
     pub cell: usize,
     /// The boundary element, on the stick side of `at`.
     pub support: [f64; 2],
-    /// Its collocation point.
+    /// Its collocation point, half a cell from `at`.
     pub colloc: f64,
-    /// The stick cell merged into the element, if any.
-    pub merged: Option<usize>,
+    /// The stick cell next to `cell`, which the element covers too.
+    pub merged: usize,
     /// The slip part of `cell`.
     pub slip_part: [f64; 2],
     /// The zone.
@@ -189,26 +197,18 @@ pub(super) fn layout(cells: &[Cell], x: &[f64], width: f64, zones: &[Zone]) -> O
         let (mut free_lo, mut free_hi) = (lo as i64, hi as i64);
         if let End::Soft { at, sign } = z.left {
             let k = lo;
-            let right_edge = edge(k) + width;
-            let stick = right_edge - at;
-            let (support, colloc, merged) = if stick >= 0.5 * width {
-                free_lo = k as i64 + 1;
-                ([at, right_edge], 0.5 * (at + right_edge), None)
-            } else {
-                free_lo = k as i64 + 2;
-                if k + 1 >= n {
-                    return None;
-                }
-                ([at, right_edge + width], x[k + 1], Some(k + 1))
-            };
+            if k + 1 >= n {
+                return None;
+            }
+            free_lo = k as i64 + 2;
             ends.push(SoftEnd {
                 at,
                 side: -1.0,
                 sign,
                 cell: k,
-                support,
-                colloc,
-                merged,
+                support: [at, edge(k) + 2.0 * width],
+                colloc: at + 0.5 * width,
+                merged: k + 1,
                 slip_part: [edge(k), at],
                 zone,
                 window,
@@ -216,27 +216,19 @@ pub(super) fn layout(cells: &[Cell], x: &[f64], width: f64, zones: &[Zone]) -> O
         }
         if let End::Soft { at, sign } = z.right {
             let k = hi;
-            let left_edge = edge(k);
-            let stick = at - left_edge;
-            let (support, colloc, merged) = if stick >= 0.5 * width {
-                free_hi = k as i64 - 1;
-                ([left_edge, at], 0.5 * (left_edge + at), None)
-            } else {
-                free_hi = k as i64 - 2;
-                if k == 0 {
-                    return None;
-                }
-                ([left_edge - width, at], x[k - 1], Some(k - 1))
-            };
+            if k == 0 {
+                return None;
+            }
+            free_hi = k as i64 - 2;
             ends.push(SoftEnd {
                 at,
                 side: 1.0,
                 sign,
                 cell: k,
-                support,
-                colloc,
-                merged,
-                slip_part: [at, left_edge + width],
+                support: [edge(k) - width, at],
+                colloc: at - 0.5 * width,
+                merged: k - 1,
+                slip_part: [at, edge(k) + width],
                 zone,
                 window,
             });
