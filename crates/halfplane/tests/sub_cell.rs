@@ -105,7 +105,7 @@ fn cattaneo_traction_converges_monotonically_to_the_issues_targets() {
     // P pressed in one increment, then Q = 0.5 f P in one (the benchmark's load). Targets of
     // issue 20: the largest traction error falls with every refinement and is at most 1e-3 f p0
     // at 400 cells and 2e-4 at 1600; the stick half-width within 0.05 cells. Measured:
-    // 2.5e-4, 1.8e-4, 7.0e-5 at 400, 800, 1600 cells; half-widths within 0.0003 cells. (Cell-level
+    // 2.0e-4, 1.0e-4, 5.3e-5 at 400, 800, 1600 cells; half-widths within 0.0003 cells. (Cell-level
     // boundaries: 8.3e-3, 5.1e-3, 3.5e-3 and up to 0.58 cells.)
     let rows = [[P, 0.0, 0.0], [P, 0.5 * F * P, 0.0]];
     let mut previous = f64::INFINITY;
@@ -136,7 +136,7 @@ fn cattaneo_in_thirty_increments_is_located_as_well() {
     // stretch from the pressed state (`march/chain.rs`) and every increment is located as
     // Cattaneo in one increment: the path does not matter in exact theory, and the reported
     // traction at the last increment equals the one-increment load's to rounding (measured
-    // 2.5e-4 f p0 from the closed form at 400 cells in both; the bound on their difference is
+    // 2.0e-4 f p0 from the closed form at 400 cells in both; the bound on their difference is
     // far below that error and far above rounding). When each increment was solved from the
     // cell-level state before it, the last was 3.5e-4 f p0 off; from the first located
     // increment, 6.8e-5 (both with the boundary element of before 2026-11-27, layout.rs).
@@ -169,11 +169,10 @@ fn cattaneo_in_thirty_increments_is_located_as_well() {
 fn the_located_boundary_holds_wherever_it_falls_in_its_cell() {
     // Q from 100 to 110 in 40 increments after the press (one stretch: each increment located
     // as if loaded at once) moves c across four cells at 1600 cells. The located boundary's
-    // error is a function of where c falls in its cell: measured at most 2.4e-4 cells, rising
-    // from 0 where c is at a cell edge to 2.4e-4 as the element grows to two cells. With the
-    // boundary element of before 2026-11-27 (`march/layout.rs`: the stick part alone from half
-    // a cell up, merged below, each collocated at its own centre) it was -7.1e-4 to +3.5e-4
-    // cells with a jump at mid-cell, which the bound fails.
+    // error was a function of where c falls in its cell: with the boundary element of before
+    // 2026-11-27 (`march/layout.rs`: the stick part alone from half a cell up, merged below,
+    // each collocated at its own centre) -7.1e-4 to +3.5e-4 cells with a jump at mid-cell, which
+    // the bound fails. Now +1.3e-4 to +2.6e-4 cells, whatever the position.
     let mut rows = vec![[P, 0.0, 0.0]];
     rows.extend((0..=40).map(|i| [P, 100.0 + 10.0 * i as f64 / 40.0, 0.0]));
     let (r, kept) = run(&rows, 1600);
@@ -190,6 +189,39 @@ fn the_located_boundary_holds_wherever_it_falls_in_its_cell() {
         worst < 3e-4,
         "a stick-slip boundary {worst:e} cells from Cattaneo-Mindlin's c"
     );
+}
+
+#[test]
+fn near_gross_sliding_the_located_traction_beats_the_cell_level_one() {
+    // Q = r f P in one increment, 400 cells: the stick zone shrinks to a few cells. Measured
+    // largest traction error, located / cell-level: 9.3e-5 / 8.1e-3, 6.5e-5 / 1.6e-3,
+    // 7.8e-5 / 3.6e-3, 7.9e-5 / 8.2e-4, 5.7e-4 / 8.7e-4 f p0 at r = 0.8, 0.9, 0.95, 0.99, 0.998.
+    // At r = 0.99 the boundary falls on a cell edge (c = 20 cells): reported without a root
+    // there (the search's first jumps below its threshold), it was 2.0e-3. With the root's taper
+    // `(1 - t)^2`, whose own `r^(3/2)` term grows as the zone shrinks (`march/kernel.rs`), it was
+    // 2.9e-3 at 0.998 (a reviewer's case). Bound: below 1e-3 and below the cell-level march's
+    // error.
+    for r in [0.8, 0.9, 0.95, 0.99, 0.998] {
+        let q = r * F * P;
+        let rows = [[P, 0.0, 0.0], [P, q, 0.0]];
+        let (located, kept) = run(&rows, 400);
+        let (on, _) = cattaneo_errors(&located, &kept, q);
+        let c = contact(Profile::hertz(RADIUS).unwrap());
+        let mut plain = Vec::new();
+        let cell_level = march(
+            &c,
+            &History::from_rows(&rows).unwrap(),
+            &MarchOptions::default().with_cells(400).unwrap(),
+            |s, f: &Fields| plain.push((s.clone(), Kept::of(f))),
+        )
+        .unwrap();
+        let (off, _) = cattaneo_errors(&cell_level, &plain, q);
+        eprintln!("Q = {r} f P: {on:.1e} f p0 located, {off:.1e} cell-level");
+        assert!(
+            on < 1e-3 && on < off,
+            "Q = {r} f P: the located traction is {on:e} f p0 off, the cell-level {off:e}"
+        );
+    }
 }
 
 /// `sxx` on the surface under Hertz pressure of half-width `a` and the shear
@@ -265,7 +297,7 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
     // 1.4e-2 p0 five cells inside the edge after the reversal. Three histories reach Q = 300 and
     // go back to 280: in one increment, in 30, and round the issue's cycle.
     //
-    // At Q = 300, every history: 1.6e-5 p0 at c and 6.9e-5 near (5.6e-5 and 1.1e-4 with the
+    // At Q = 300, every history: 2.2e-5 p0 at c and 7.3e-5 near (5.6e-5 and 1.1e-4 with the
     // boundary element of before 2026-11-27). The first loading is one
     // stretch from the pressed state and each half-cycle one from the last extreme's located
     // state (`march/chain.rs`). Solved from the cell-level state at every increment, it was
@@ -279,7 +311,7 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
     // boundaries); the bound near them is the issue's halved, so that a root over one cell
     // (2.2e-3) or two (1.5e-3) fails it.
     //
-    // After the reversal, every history: 3.3e-4 p0 at x = c' and 7.3e-4 near. With the boundary
+    // After the reversal, every history: 2.8e-4 p0 at x = c' and 7.4e-4 near. With the boundary
     // element of before 2026-11-27 (`march/layout.rs`) it was 2.8e-3 at c': the located `c'`
     // was 7.5e-4 cells inside, so c' lay on the slip side of the computed kink, where the surface
     // stress of a square-root kink varies like the square root of the distance (with the exact
@@ -325,8 +357,8 @@ fn surface_stresses_at_the_boundary_and_after_a_reversal_match_mindlin() {
 #[test]
 fn surface_stresses_at_the_boundary_hold_over_the_cattaneo_load_range() {
     // Q in one increment, 1600 cells, surface sxx against McEwen's fields of the
-    // Cattaneo-Mindlin traction: measured at x = c 2.2e-5, 2.5e-5, 6.0e-5, 1.8e-4, 2.0e-5 p0 at
-    // Q = 20, 40, 100, 200, 400, and at most 1.9e-4 at 0.5-5 cells either side. With the
+    // Cattaneo-Mindlin traction: measured at x = c 5.1e-6, 9.6e-6, 3.6e-5, 2.0e-5, 2.6e-5 p0 at
+    // Q = 20, 40, 100, 200, 400, and at most 2.1e-4 at 0.5-5 cells either side. With the
     // boundary element of before 2026-11-27 (`march/layout.rs`) the located boundary was up to
     // 8.2e-4 cells off and the point up to 1.13e-3 p0, which the bound at the point (a quarter of
     // the issue's 2e-3) fails; near it the bound is half the issue's.
@@ -386,7 +418,7 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     // boundary 0.71 cells off). In exact theory the state at Q = -300 after +300 is the virgin
     // one, and so is the located state, each half-cycle being one stretch from the last extreme
     // and the first loading one from the pressed state: the state at -300 and its two repeats
-    // equal Q = -300 loaded in one increment to rounding (measured 400 cells: within 2.5e-4 f p0
+    // equal Q = -300 loaded in one increment to rounding (measured 400 cells: within 2.0e-4 f p0
     // of Cattaneo-Mindlin, the located traction's own error; from the one-increment state
     // 2e-11 or less; the bound is far below that error). A first loading whose stretch starts at
     // its first located increment fails it (it was 2.3e-4 f p0 from Cattaneo-Mindlin when the
@@ -425,13 +457,12 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     // Variable amplitudes (40 reversals between 100 and 300, ten increments each), then beyond
     // every earlier peak to |Q| = 317, where the state is the virgin Cattaneo one again. Each
     // half-cycle is solved from the last extreme's located state, whose errors carry over: at
-    // 1600 cells 8.8e-5, 1.3e-4, 2.2e-4, 3.9e-4, 4.2e-5 f p0 after 1, 8, 16, 40, 100 reversals
-    // (Q = 317 loaded at once: 5.4e-5; solved from the cell level every increment, 5e-5 whatever
-    // the count; with the boundary element of before 2026-11-27, 2.2e-4 after 40). The largest
-    // error sits on the new boundary's element, whose located position the start's accumulated
-    // traction moves (9.4e-3 cells after 40 reversals, 4e-5 loaded at once). Without the
-    // fall-back to the cell level when a start's kink lies near a new boundary
-    // (`march/boundary.rs`), 8.8e-4 after 40 and 1.2e-3 after 100: the bound, 5e-4, fails it.
+    // 1600 cells 5.4e-5, 3.6e-5, 3.4e-4, 8.6e-5, 3.4e-5 f p0 after 1, 8, 16, 40, 100 reversals
+    // (Q = 317 loaded at once: 4.8e-5; solved from the cell level every increment, 5e-5 whatever
+    // the count; docs/convergence.md has other grids, where it reaches 1e-3). Falling back to
+    // the cell level when a start's kink lies within three cells of a new boundary
+    // (`march/boundary.rs`) matters: within two, 2.8e-4 after 40; never, 7.8e-4 after 40 and
+    // 1.05e-3 after 100. The bound, 2e-4, fails both.
     let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
     let (mut seed, mut q, mut sign) = (12345u64, 0.0f64, 1.0f64);
     for _ in 0..40 {
@@ -447,7 +478,7 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     let (_, kept) = run(&rows, 1600);
     let error = virgin_error(&kept, kept.len(), last);
     eprintln!("40 reversals, then Q = {last}: {error:.2e} f p0");
-    assert!(error < 5e-4, "after 40 reversals: {error:e} f p0");
+    assert!(error < 2e-4, "after 40 reversals: {error:e} f p0");
 }
 
 /// The issue's history: P to 1000 in ten increments, Q to 300 in 15, then `cycles` cycles
@@ -474,10 +505,10 @@ fn located_reports_leave_the_marched_state_alone_and_repeat_over_cycles() {
     //
     // Each half-cycle's located solve starts from the last extreme's located state, and the
     // first loading's from the pressed state: Mindlin's state at Q = 300 is the first loading's
-    // again at every cycle, and so is the located one, to rounding (measured 4.5e-12 to 1.1e-11
+    // again at every cycle, and so is the located one, to rounding (measured 3.1e-12 to 1.6e-11
     // f p0 over four cycles at 400 cells). When the first loading started from its first
     // located increment, the extreme drifted by 4.4e-5, 3.3e-5, 2.6e-5, 2.0e-5 f p0 a cycle.
-    // The bound is a hundred times the rounding measured.
+    // The bound is sixty times the largest change measured.
     let rows = issue_cycle(4, &[]);
     let (located, kept) = run(&rows, 400);
     let c = contact(Profile::hertz(RADIUS).unwrap());

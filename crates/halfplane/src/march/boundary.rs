@@ -193,7 +193,7 @@ impl Marcher {
     /// Whether a kink of the stretch's start lies within three cells of a new boundary without
     /// being the one that boundary takes over (`chain.rs`, [`super::chain::Model::kink_at`]):
     /// the element reaches up to two cells into the stick zone, and the slip part up to one out
-    /// (with two, 4.4e-4 f p0 after 40 random reversals at 1600 cells, with three 3.9e-4).
+    /// (with two, 2.8e-4 f p0 after 40 random reversals at 1600 cells, with three 8.6e-5).
     fn start_kink_in_an_element(&self) -> bool {
         let (Some(s), Some(lay)) = (&self.stretch, &self.layout) else {
             return false;
@@ -314,11 +314,12 @@ impl Marcher {
             }
             let size = ends.iter().fold(0.0f64, |a, e| a.max(e.jump.abs()));
             if solves == 1 && size <= QUIET * f_scale {
-                // The traction meets the limit at the cell edges already: no boundary to locate
-                // (a stick zone ending in a band of cells at the limit, where the jump is only
-                // discretisation noise and any point of the band would do). The cell-level
-                // solution stands.
-                break;
+                // The traction meets the limit at the cell edges already: the boundaries are
+                // there (or in a band of cells at the limit, where the jump is only
+                // discretisation noise and any point of the band would do).
+                self.end_solutions = ends;
+                self.layout = Some(lay);
+                return Ok(solves);
             }
             if best.as_ref().is_none_or(|b| size < b.0) {
                 best = Some((size, searches.iter().map(|s| s.y).collect()));

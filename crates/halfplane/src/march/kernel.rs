@@ -142,10 +142,22 @@ pub(super) fn dense_matrix(row: &[f64]) -> Vec<f64> {
 pub(super) enum Shape {
     /// `value + slope (xi - centre)`.
     Affine { centre: f64, value: f64, slope: f64 },
-    /// `sqrt(r) (1 - r/window)^2` with `r = side (at - xi)`, zero where r < 0 or r > window:
-    /// the square root of a stick-slip boundary at `at` whose stick side is to the left
-    /// (`side = 1`) or to the right (`-1`), tapered to zero with zero slope at `window` from it.
+    /// `sqrt(r) g(r/window)` with `r = side (at - xi)` and the taper [`root_taper`], zero where
+    /// r < 0 or r > window: the square root of a stick-slip boundary at `at` whose stick side is
+    /// to the left (`side = 1`) or to the right (`-1`), tapered to zero with zero slope at
+    /// `window` from it.
     Root { at: f64, side: f64, window: f64 },
+}
+
+/// The square root's taper `g(t) = 1 - 3 t^2 + 2 t^3`: 1 at the boundary, zero with zero slope
+/// at the window's end, and flat at the boundary, so that the tapered root has no `r^(3/2)` term
+/// of its own. The traction's own `r^(3/2)` term at a boundary is small (for Cattaneo-Mindlin
+/// `sqrt(c - x) sqrt(c + x)`, `-1/(4c)` relative); with the earlier taper `(1 - t)^2` the root
+/// carried `-2/window` relative, with the window half the zone `-2/c`, which the boundary
+/// element, a constant and a fixed ramp, cannot take out: its error grew as the stick zone
+/// shrank (docs/convergence.md, "Sub-cell stick-slip boundaries").
+pub(super) fn root_taper(t: f64) -> f64 {
+    1.0 - t * t * (3.0 - 2.0 * t)
 }
 
 /// Multipole terms kept far from an element (its moments about the midpoint, orders 0..TERMS-1).
@@ -187,15 +199,14 @@ impl Element {
                 }
             }
             Shape::Root { at, side, window } => {
-                // xi = at - side v^2, the root v (1 - v^2/window)^2, dxi = 2 v dv (orientation
-                // absorbed): the moments are polynomials of degree 2m + 6 in v, exact with 20
-                // Gauss points (m <= 16).
+                // xi = at - side v^2, the root v g(v^2/window), dxi = 2 v dv (orientation
+                // absorbed): the moments are polynomials of degree 2m + 8 in v, exact with 20
+                // Gauss points (m <= 15).
                 let (v1, v2) = root_range(lo, hi, at, side);
                 moments = gauss_legendre(v1, v2, |v| {
                     let d = at - side * v * v - mid;
-                    let taper = 1.0 - v * v / window;
                     let mut out = [0.0; TERMS];
-                    let mut p = 2.0 * v * v * taper * taper;
+                    let mut p = 2.0 * v * v * root_taper(v * v / window);
                     for o in out.iter_mut() {
                         *o = p;
                         p *= d;
@@ -247,7 +258,7 @@ impl Element {
                 if r < 0.0 || r > window {
                     0.0
                 } else {
-                    r.sqrt() * (1.0 - r / window).powi(2)
+                    r.sqrt() * root_taper(r / window)
                 }
             }
         }
@@ -288,11 +299,12 @@ impl Element {
                 -(f(hi - x) - f(lo - x))
             }
             Shape::Root { at, side, window } => {
-                // sqrt(r) (1 - r/L)^2 = r^(1/2) - 2 r^(3/2)/L + r^(5/2)/L^2.
+                // sqrt(r) g(r/L) = r^(1/2) - 3 r^(5/2)/L^2 + 2 r^(7/2)/L^3.
                 let (v1, v2) = root_range(lo, hi, at, side);
                 let d = side * (at - x);
-                let c = [1.0, -2.0 / window, 1.0 / (window * window)];
-                -(0..3)
+                let c = [1.0, 0.0, -3.0 / (window * window), 2.0 / window.powi(3)];
+                -(0..4)
+                    .filter(|&k| c[k] != 0.0)
                     .map(|k| {
                         c[k] * (root_antiderivative(v2, d, scale, k)
                             - root_antiderivative(v1, d, scale, k))

@@ -122,9 +122,9 @@ impl PressureShape {
 }
 
 /// `[integral R, integral (x - centre) R]` over `[lo, hi]` of the tapered root
-/// `R = sqrt(r) (1 - r/window)^2`, `r = side (at - x)` (`kernel::Shape::Root`), which must lie
-/// on its side within the window: in the variable `v = sqrt(r)` the integrands are polynomials of
-/// degree at most 8, so the 20-point Gauss rule is exact.
+/// `R = sqrt(r) g(r/window)`, `r = side (at - x)` (`kernel::Shape::Root`, `g` its taper), which
+/// must lie on its side within the window: in the variable `v = sqrt(r)` the integrands are
+/// polynomials of degree at most 10, so the 20-point Gauss rule is exact.
 pub(super) fn root_moments(
     at: f64,
     side: f64,
@@ -139,8 +139,7 @@ pub(super) fn root_moments(
     let (a, b) = ((side * (at - lo)).max(0.0), (side * (at - hi)).max(0.0));
     let (v1, v2) = (a.min(b).sqrt(), a.max(b).sqrt());
     gauss_legendre(v1, v2, |v| {
-        let taper = 1.0 - v * v / window;
-        let weight = 2.0 * v * v * taper * taper;
+        let weight = 2.0 * v * v * super::kernel::root_taper(v * v / window);
         [weight, weight * (at - side * v * v - centre)]
     })
 }
@@ -218,7 +217,7 @@ mod tests {
             let centre = 0.5 * (lo + hi) + 0.01;
             let f = |x: f64| {
                 let r: f64 = side * (at - x);
-                let v = r.max(0.0).sqrt() * (1.0 - r / window).powi(2);
+                let v = r.max(0.0).sqrt() * super::super::kernel::root_taper(r / window);
                 [v, v * (x - centre)]
             };
             let mut want = [0.0; 2];
