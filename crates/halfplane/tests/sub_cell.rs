@@ -23,14 +23,24 @@ fn options(cells: usize) -> MarchOptions {
         .unwrap()
 }
 
-/// Marches `rows` (Hertz) and keeps each increment's report and a copy of its fields.
+/// Marches `rows` (Hertz) with located boundaries and keeps each increment's report and a copy
+/// of its fields.
 fn run(rows: &[[f64; 3]], cells: usize) -> (MarchResult, Vec<(StepReport, Kept)>) {
+    march_kept(rows, &options(cells))
+}
+
+/// The same with cell-edge boundaries.
+fn run_cell_level(rows: &[[f64; 3]], cells: usize) -> (MarchResult, Vec<(StepReport, Kept)>) {
+    march_kept(rows, &MarchOptions::default().with_cells(cells).unwrap())
+}
+
+fn march_kept(rows: &[[f64; 3]], options: &MarchOptions) -> (MarchResult, Vec<(StepReport, Kept)>) {
     let c = contact(Profile::hertz(RADIUS).unwrap());
     let mut kept = Vec::new();
     let r = march(
         &c,
         &History::from_rows(rows).unwrap(),
-        &options(cells),
+        options,
         |s, f: &Fields| kept.push((s.clone(), Kept::of(f))),
     )
     .unwrap();
@@ -78,6 +88,17 @@ fn hertz(b: f64, x: f64) -> f64 {
         .compliance()
         .value();
     closed_form::hertz_pressure(a_comp, RADIUS, b, x)
+}
+
+/// The largest difference between two increments' centre tractions, as a fraction of `f p0`
+/// (`scale`).
+fn apart(a: &Kept, b: &Kept, scale: f64) -> f64 {
+    a.traction
+        .iter()
+        .zip(&b.traction)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+        / scale
 }
 
 /// Largest |q - f (p_a - p_c)| over the cell centres, as a fraction of f p0, and the stick
@@ -148,16 +169,7 @@ fn cattaneo_in_thirty_increments_is_located_as_well() {
     assert!(worst <= 1e-3 && edge < 0.05, "{worst:e} f p0, {edge} cells");
     let (_, once) = run(&[[P, 0.0, 0.0], [P, 300.0, 0.0]], 400);
     let f_p0 = F * hertz(kept[0].0.half_width, 0.0);
-    let apart = kept
-        .last()
-        .unwrap()
-        .1
-        .traction
-        .iter()
-        .zip(&once.last().unwrap().1.traction)
-        .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max)
-        / f_p0;
+    let apart = apart(&kept.last().unwrap().1, &once.last().unwrap().1, f_p0);
     eprintln!("30 increments against one: {apart:.1e} f p0");
     assert!(
         apart < 1e-9,
@@ -206,15 +218,7 @@ fn near_gross_sliding_the_located_traction_beats_the_cell_level_one() {
         let rows = [[P, 0.0, 0.0], [P, q, 0.0]];
         let (located, kept) = run(&rows, 400);
         let (on, _) = cattaneo_errors(&located, &kept, q);
-        let c = contact(Profile::hertz(RADIUS).unwrap());
-        let mut plain = Vec::new();
-        let cell_level = march(
-            &c,
-            &History::from_rows(&rows).unwrap(),
-            &MarchOptions::default().with_cells(400).unwrap(),
-            |s, f: &Fields| plain.push((s.clone(), Kept::of(f))),
-        )
-        .unwrap();
+        let (cell_level, plain) = run_cell_level(&rows, 400);
         let (off, _) = cattaneo_errors(&cell_level, &plain, q);
         eprintln!("Q = {r} f P: {on:.1e} f p0 located, {off:.1e} cell-level");
         assert!(
@@ -242,16 +246,7 @@ fn a_stretch_does_not_depend_on_the_path_from_a_stuck_start() {
     let (_, a) = run(&ten, 400);
     let (_, b) = run(&one, 400);
     let f_p0 = F * hertz(a[0].0.half_width, 0.0);
-    let apart = a
-        .last()
-        .unwrap()
-        .1
-        .traction
-        .iter()
-        .zip(&b.last().unwrap().1.traction)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-        / f_p0;
+    let apart = apart(&a.last().unwrap().1, &b.last().unwrap().1, f_p0);
     eprintln!("after a ramp of P: ten increments against one, {apart:.1e} f p0");
     assert!(
         apart < 1e-9,
@@ -467,19 +462,12 @@ fn a_dwell_and_variable_amplitudes_keep_the_located_traction() {
     });
     let (_, kept) = run(&dwell, 400);
     let (_, once) = run(&[[P, 0.0, 0.0], [P, -300.0, 0.0]], 400);
-    let virgin = &once.last().unwrap().1.traction;
+    let virgin = &once.last().unwrap().1;
     let f_p0 = F * hertz(kept[0].0.half_width, 0.0);
     let n = kept.len();
     for step in [n - 2, n - 1, n] {
         let error = virgin_error(&kept, step, -300.0);
-        let apart = kept[step - 1]
-            .1
-            .traction
-            .iter()
-            .zip(virgin)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max)
-            / f_p0;
+        let apart = apart(&kept[step - 1].1, virgin, f_p0);
         eprintln!(
             "dwell at Q = -300, increment {step}: {error:.2e} f p0 from Cattaneo-Mindlin, \
              {apart:.1e} from Q = -300 in one increment"
@@ -546,15 +534,7 @@ fn located_reports_leave_the_marched_state_alone_and_repeat_over_cycles() {
     // The bound is sixty times the largest change measured.
     let rows = issue_cycle(4, &[]);
     let (located, kept) = run(&rows, 400);
-    let c = contact(Profile::hertz(RADIUS).unwrap());
-    let mut plain = Vec::new();
-    let cell_level = march(
-        &c,
-        &History::from_rows(&rows).unwrap(),
-        &MarchOptions::default().with_cells(400).unwrap(),
-        |s, f: &Fields| plain.push((s.clone(), Kept::of(f))),
-    )
-    .unwrap();
+    let (cell_level, plain) = run_cell_level(&rows, 400);
     assert_eq!(located.steps.len(), cell_level.steps.len());
     let (mut energy, mut slip, mut shift) = (0.0f64, 0.0f64, 0.0f64);
     let slip_scale = plain
@@ -582,14 +562,7 @@ fn located_reports_leave_the_marched_state_alone_and_repeat_over_cycles() {
     let extremes: Vec<&Kept> = (0..=4).map(|k| &kept[24 + 60 * k].1).collect();
     let changes: Vec<f64> = extremes
         .windows(2)
-        .map(|w| {
-            w[0].traction
-                .iter()
-                .zip(&w[1].traction)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max)
-                / f_p0
-        })
+        .map(|w| apart(w[0], w[1], f_p0))
         .collect();
     eprintln!("change of the located traction at Q = 300 per cycle: {changes:?} f p0");
     assert!(
