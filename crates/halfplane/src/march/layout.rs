@@ -14,9 +14,11 @@
 //! midpoint) and merged below (collocated at the neighbour's centre), `at` was off by up to
 //! 7e-4 cells, with a jump where the two met; always merged and collocated half a cell from
 //! `at`, the collocation points keep the spacing of whole cells next to the boundary and `at`
-//! is off by at most 2.4e-4 cells (Cattaneo, 1600 cells, the boundary swept over four cells;
-//! docs/convergence.md). Collocated half a cell from `at`, the stick part alone (shorter than
-//! a cell) put its point on or near the element's end, and `at` went up to 9e-3 cells off.
+//! was off by 0 to 2.4e-4 cells (Cattaneo, 1600 cells, the boundary swept over four cells;
+//! docs/convergence.md), and by +1.3e-4 to +2.6e-4 wherever it falls once the root's taper was
+//! made flat at the boundary (`kernel.rs`). Collocated half a cell from `at`, the stick part
+//! alone (shorter than a cell) put its point on or near the element's end, and `at` went up to
+//! 9e-3 cells off.
 //!
 //! Owns the geometry of a layout only. Never solves anything.
 
