@@ -146,17 +146,6 @@ impl Marcher {
             }
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
-        if self.located.is_none() && !self.cells.iter().any(|c| matches!(c, Cell::Slip(_))) {
-            // Full stick: the cell-level state is its own located solution, and may start a
-            // stretch.
-            let centre = cell_level
-                .iter()
-                .zip(&self.dq)
-                .zip(&self.cells)
-                .map(|((q, d), c)| if *c == Cell::Out { 0.0 } else { q + d })
-                .collect();
-            self.located = Some(self.stuck_model(centre, load));
-        }
         Ok(solves)
     }
 

@@ -21,8 +21,8 @@
 //! of its increments is located as if loaded in one. Otherwise the located solve starts from the
 //! cell-level state, as it always did, and so does an increment whose new boundary's element
 //! would swallow another kink of the start (`boundary.rs`). The price: under variable
-//! amplitudes each half-cycle inherits the last extreme's small errors (2.2e-4 f p0 after 40
-//! random reversals at 1600 cells, against 5e-5 from the cell level).
+//! amplitudes each half-cycle inherits the last extreme's small errors (up to about 1e-3 f p0
+//! after random reversals, against 5e-5 from the cell level at 1600 cells; docs/convergence.md).
 //!
 //! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
 //! and slope), exact pieces near each boundary (the element's affine parts, each root within

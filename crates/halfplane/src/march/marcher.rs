@@ -346,6 +346,14 @@ impl Marcher {
             energy_increment += energy;
             passes += used;
         }
+        if self.locates()
+            && self.located.is_none()
+            && !self.cells.iter().any(|c| matches!(c, Cell::Slip(_)))
+        {
+            // Stuck (the pressed state above all): the cell-level state is its own located
+            // solution, and may start a stretch (`chain.rs`).
+            self.located = Some(self.stuck_model(self.traction.clone(), load));
+        }
         self.energy += energy_increment;
         self.step = step;
         self.reported_kinks = self.view.as_ref().map_or(Vec::new(), |v| v.kinks.clone());
@@ -393,11 +401,7 @@ impl Marcher {
             // carries no shear, which is the solution; nothing slips.
             self.sub_slip.fill(0.0);
             self.view = None;
-            if last && cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none() {
-                // The pressed state, stuck with no traction: where a first loading's stretch
-                // starts (`chain.rs`).
-                self.located = Some(self.stuck_model(vec![0.0; n], load));
-            }
+            self.located = None;
             self.load = Some(load);
             self.state = Some(target);
             return Ok((0.0, 0));
@@ -555,17 +559,20 @@ impl Marcher {
         // the bodies' rigid relative displacement moves by `-c_disp c`.
         self.displacement -= c_disp * shift;
         let energy = self.dissipation(ends_start, target.ends(), step)?;
-        // A worn gap's pressure is known at the cell centres only, not as the profile's closed
-        // form that the located boundaries' limit moments integrate (`moments.rs`).
-        // `cfg!`: a build without the feature (the web page) leaves the located boundaries'
-        // code out of its binary.
-        if last && cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none() {
+        if last && self.locates() {
             passes += self.view(load, &target, d_sigma, step)?;
         } else {
             self.view = None;
         }
         self.commit(load, target);
         Ok((energy, passes))
+    }
+
+    /// Whether increments are located (`boundary.rs`): the option on and no worn gap, whose
+    /// pressure is known at the centres only, not as the closed form the limit moments integrate
+    /// (`moments.rs`). `cfg!`: a build without the feature (the web page) leaves that code out.
+    fn locates(&self) -> bool {
+        cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none()
     }
 
     /// The contact ends reached, `[0, 0]` unloaded.
