@@ -57,11 +57,14 @@ pub struct TractionKink {
 }
 
 /// The increment's end as reported with its stick-slip boundaries inside their cells: the
-/// centre tractions and the boundaries.
+/// centre tractions, the boundaries, the accumulated slip and the relative displacement (datum
+/// the kernel's scale; `report.rs`).
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct View {
     pub traction: Vec<f64>,
     pub kinks: Vec<TractionKink>,
+    pub slip: Vec<f64>,
+    pub displacement: f64,
 }
 
 impl Marcher {
@@ -113,6 +116,19 @@ impl Marcher {
                 .map(|s| &s.start);
             let base = start.map_or(&cell_level, |s| &s.centre);
             let traction: Vec<f64> = base.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
+            // The slip and the rigid displacement go on from the start's likewise; the
+            // cell-level start's displacement is the state's before the sub-step's own shift.
+            let c_disp = self.compliance / std::f64::consts::PI;
+            let (base_slip, base_displacement) = start
+                .map_or((&self.slip, self.displacement + c_disp * saved.4), |s| {
+                    (&s.slip, s.displacement)
+                });
+            let slip: Vec<f64> = base_slip
+                .iter()
+                .zip(&self.sub_slip)
+                .map(|(s, d)| s + d)
+                .collect();
+            let displacement = base_displacement - c_disp * self.shift;
             let mut kinks = Vec::with_capacity(lay.ends.len());
             for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
                 let pressure = self.pressure_at(e.at)?;
@@ -140,9 +156,16 @@ impl Marcher {
                 kinks: kept,
                 load,
                 pressure: self.pressure.clone(),
+                slip: slip.clone(),
+                displacement,
             });
             if !lay.ends.is_empty() || from_start {
-                self.view = Some(View { traction, kinks });
+                self.view = Some(View {
+                    traction,
+                    kinks,
+                    slip,
+                    displacement,
+                });
             }
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;

@@ -75,6 +75,10 @@ pub(super) struct Model {
     /// The load and the pressure it was solved for.
     pub load: LoadPoint,
     pub pressure: Vec<f64>,
+    /// The accumulated slip and the relative displacement (datum the kernel's scale) reported
+    /// with it (`report.rs`).
+    pub slip: Vec<f64>,
+    pub displacement: f64,
 }
 
 impl Model {
@@ -100,11 +104,13 @@ pub(super) struct Cells {
     pub pieces: Vec<Piece>,
 }
 
-/// A stretch: its start, and the direction in which each cell has slipped since (0: stuck).
+/// A stretch: its start, the direction in which each cell has slipped since (0: stuck), and
+/// the energy dissipated since, as last reported (`report.rs`).
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Stretch {
     pub start: Model,
     pub slipped: Vec<f64>,
+    pub work: f64,
 }
 
 impl Marcher {
@@ -163,11 +169,12 @@ impl Marcher {
         Some(Stretch {
             start: last,
             slipped,
+            work: 0.0,
         })
     }
 
     /// A stuck state's located solution: the cell-level traction `centre` (piecewise constant,
-    /// no boundary), at `load` and the current pressure.
+    /// no boundary), slip and displacement, at `load` and the current pressure.
     pub(super) fn stuck_model(&self, centre: Vec<f64>, load: LoadPoint) -> Model {
         Model {
             cells: Cells {
@@ -179,6 +186,8 @@ impl Marcher {
             kinks: Vec::new(),
             load,
             pressure: self.pressure.clone(),
+            slip: self.slip.clone(),
+            displacement: self.displacement,
         }
     }
 

@@ -197,9 +197,10 @@ fn drive<B>(
     for k in 0..plan.total {
         let (load, place) = plan.at(k);
         if place.is_some_and(|(_, i)| i == 0) {
-            low.copy_from_slice(&marcher.slip);
-            high.copy_from_slice(&marcher.slip);
-            cycle_energy_start = marcher.energy;
+            let (slip, _, energy, _) = marcher.reported();
+            low.copy_from_slice(slip);
+            high.copy_from_slice(slip);
+            cycle_energy_start = energy;
         }
         let report = marcher.step(load)?;
         if let ControlFlow::Break(value) = observer(&report, &marcher.fields()) {
@@ -207,16 +208,17 @@ fn drive<B>(
         }
         steps.push(report);
         let Some((c, i)) = place else { continue };
+        let (slip, _, energy, _) = marcher.reported();
         for j in 0..n {
-            low[j] = low[j].min(marcher.slip[j]);
-            high[j] = high[j].max(marcher.slip[j]);
+            low[j] = low[j].min(slip[j]);
+            high[j] = high[j].max(slip[j]);
         }
         if i + 1 < steps_per_cycle {
             continue;
         }
         let cycle = CycleReport {
             index: c + 1,
-            energy: marcher.energy - cycle_energy_start,
+            energy: energy - cycle_energy_start,
             slip_range: high.iter().zip(&low).map(|(h, l)| h - l).collect(),
         };
         steady_change = cycles

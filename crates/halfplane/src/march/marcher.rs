@@ -42,7 +42,7 @@ pub(super) enum Cell {
 /// `march` module; the rest of the state is this file's alone.
 pub struct Marcher {
     pub(super) contact: Contact,
-    options: MarchOptions,
+    pub(super) options: MarchOptions,
     pub(super) compliance: f64,
     pub(super) friction: f64,
     pub(super) width: f64,
@@ -92,14 +92,16 @@ pub struct Marcher {
     /// quadrature's per-cell sums without f): what wear removes.
     pub(super) pressure_slip: Vec<f64>,
     pub(super) cells: Vec<Cell>,
-    /// The last solve of `evaluate.rs`: its layout, its boundaries' solutions and its shift.
+    /// The last solve of `evaluate.rs`: its layout, its boundaries' solutions and its shift
+    /// (also the cell-level sub-step's, for `boundary.rs`).
     pub(super) layout: Option<Layout>,
     pub(super) end_solutions: Vec<EndSolution>,
     pub(super) shift: f64,
     /// The last increment as reported with its boundaries inside cells (`boundary.rs`).
     pub(super) view: Option<super::boundary::View>,
-    /// The kinks as reported after the last increment.
+    /// The kinks, and the located slip, displacement and energy, as reported (`report.rs`).
     pub(super) reported_kinks: Vec<super::boundary::TractionKink>,
+    pub(super) reported: Option<super::report::Reported>,
     /// The last increment's located solution and the stretch the located solves start from
     /// (`chain.rs`).
     pub(super) located: Option<super::chain::Model>,
@@ -215,6 +217,7 @@ impl Marcher {
             shift: 0.0,
             view: None,
             reported_kinks: Vec::new(),
+            reported: options.sub_cell().then(|| super::report::Reported::new(n)),
             located: None,
             stretch: None,
             start_mean: zeros.clone(),
@@ -237,12 +240,13 @@ impl Marcher {
 
     /// The fields after the last increment.
     pub fn fields(&self) -> Fields<'_> {
+        let (slip, slip_increment, ..) = self.reported();
         Fields {
             x: &self.x,
             pressure: &self.pressure,
             traction: self.view.as_ref().map_or(&self.traction, |v| &v.traction),
-            slip: &self.slip,
-            slip_increment: &self.slip_increment,
+            slip,
+            slip_increment,
             kinks: &self.reported_kinks,
         }
     }
@@ -250,7 +254,7 @@ impl Marcher {
     /// The relative tangential displacement of the bodies after the last increment.
     pub fn relative_displacement(&self) -> RelativeDisplacement {
         let shear = self.load.map_or(0.0, |l| l.shear());
-        RelativeDisplacement::new(self.displacement, self.scale, self.compliance, shear)
+        RelativeDisplacement::new(self.reported().3, self.scale, self.compliance, shear)
     }
 
     /// Cell width.
@@ -355,6 +359,7 @@ impl Marcher {
             self.located = Some(self.stuck_model(self.traction.clone(), load));
         }
         self.energy += energy_increment;
+        let energy_increment = self.report(energy_increment);
         self.step = step;
         self.reported_kinks = self.view.as_ref().map_or(Vec::new(), |v| v.kinks.clone());
         // Kinematic classification: contact cells that did not slip this increment.
@@ -368,7 +373,7 @@ impl Marcher {
             ends,
             stick_intervals,
             energy_increment,
-            energy: self.energy,
+            energy: self.reported().2,
             passes,
             relative_displacement: self.relative_displacement(),
         })
@@ -558,6 +563,7 @@ impl Marcher {
         // Slip is `s = du - c_disp c` with du the surfaces' relative displacement (datum l):
         // the bodies' rigid relative displacement moves by `-c_disp c`.
         self.displacement -= c_disp * shift;
+        self.shift = shift;
         let energy = self.dissipation(ends_start, target.ends(), step)?;
         if last && self.locates() {
             passes += self.view(load, &target, d_sigma, step)?;
@@ -566,13 +572,6 @@ impl Marcher {
         }
         self.commit(load, target);
         Ok((energy, passes))
-    }
-
-    /// Whether increments are located (`boundary.rs`): the option on and no worn gap, whose
-    /// pressure is known at the centres only, not as the closed form the limit moments integrate
-    /// (`moments.rs`). `cfg!`: a build without the feature (the web page) leaves that code out.
-    fn locates(&self) -> bool {
-        cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none()
     }
 
     /// The contact ends reached, `[0, 0]` unloaded.

@@ -71,6 +71,7 @@ mod layout;
 mod marcher;
 mod moments;
 mod predict;
+mod report;
 mod solve;
 mod toeplitz;
 mod types;
