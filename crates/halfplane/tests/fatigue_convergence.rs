@@ -166,8 +166,8 @@ fn stresses_and_fatigue_parameters_converge_in_cells_and_in_time() {
 #[ignore = "long convergence study; run with --ignored (see docs/convergence.md)"]
 fn located_boundaries_make_the_fatigue_maxima_converge_faster() {
     // Issue 20: with the stick-slip boundaries inside their cells the maxima should converge
-    // faster in cells. Measured (80 increments per half): Findley -0.017%, -0.006%, -0.004% and
-    // the MWCM -0.012%, -0.005%, -0.002% from 400 to 3200 cells, against -0.07%, -0.22% and
+    // faster in cells. Measured (80 increments per half): Findley -0.018%, -0.006%, -0.004% and
+    // the MWCM -0.013%, -0.005%, -0.002% from 400 to 3200 cells, against -0.07%, -0.22% and
     // -0.04%, -0.12% from 1600 with cell edges (with the boundary element and root taper of
     // before 2026-11-27, `march/layout.rs` and `march/kernel.rs`, Findley -0.026%, -0.023%,
     // +0.008%: the changes did not keep one sign at that size). The located maxima do not depend on the time step: 80 and 160 increments per

@@ -96,6 +96,10 @@ impl Marcher {
         let rounding = 1e-13 * self.compliance * self.friction * load.normal();
         self.stretch = self.stretch_for(&saved.1, rounding);
         let cell_level = self.traction.clone();
+        if let Some(solves) = self.superposed(load, step)? {
+            (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
+            return Ok(solves);
+        }
         let mut solves = self.located_from(&cell_level, d_sigma, load, step)?;
         let mut from_start = self.stretch.is_some();
         if from_start && self.start_kink_in_an_element() {
@@ -158,6 +162,7 @@ impl Marcher {
                 pressure: self.pressure.clone(),
                 slip: slip.clone(),
                 displacement,
+                ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
             });
             if !lay.ends.is_empty() || from_start {
                 self.view = Some(View {

@@ -20,9 +20,14 @@
 //! no traction) is its own located solution, so a first loading is one stretch from it and each
 //! of its increments is located as if loaded in one. Otherwise the located solve starts from the
 //! cell-level state, as it always did, and so does an increment whose new boundary's element
-//! would swallow another kink of the start (`boundary.rs`). The price: under variable
-//! amplitudes each half-cycle inherits the last extreme's small errors (up to about 1e-3 f p0
-//! after random reversals, against 5e-5 from the cell level at 1600 cells; docs/convergence.md).
+//! would swallow another kink of the start (`boundary.rs`).
+//!
+//! Each stretch also carries the starts of the stretches before it at this pressure that
+//! Mindlin's memory still holds (turning points, and the first, at rest). Where one of them
+//! applies, the increment is that turning point's solution plus a located solve from rest
+//! (`memory.rs`), not a solve from the stretch's start: solving from the start carried the
+//! start's representation into the solve, and after random reversals put up to 4.2e-2 f p0 into
+//! the traction at 400 cells (more than the cell level's error; docs/convergence.md).
 //!
 //! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
 //! and slope), exact pieces near each boundary (the element's affine parts, each root within
@@ -32,8 +37,8 @@
 //! traction next to the boundary by 1.4e-3 f p0.
 //!
 //! The cell-level state itself, and so the active set, the slips, the energy and the cycles'
-//! repetition, never sees any of it. Owns the located solutions' model and the stretch. Never
-//! solves anything.
+//! repetition, never sees any of it. Owns the located solutions' model, the stretch and its
+//! memory of turning points. Never solves anything.
 
 use super::evaluate::Special;
 use super::kernel::{Element, Shape};
@@ -79,6 +84,9 @@ pub(super) struct Model {
     /// with it (`report.rs`).
     pub slip: Vec<f64>,
     pub displacement: f64,
+    /// Its stick-slip boundaries `[at, side, sign]` (side and slip sign as in
+    /// [`super::layout::SoftEnd`]; none for a stuck state).
+    pub ends: Vec<[f64; 3]>,
 }
 
 impl Model {
@@ -104,14 +112,21 @@ pub(super) struct Cells {
     pub pieces: Vec<Piece>,
 }
 
-/// A stretch: its start, the direction in which each cell has slipped since (0: stuck), and
-/// the energy dissipated since, as last reported (`report.rs`).
+/// A stretch: its start, the direction in which each cell has slipped since (0: stuck), the
+/// energy dissipated since, as last reported (`report.rs`), and the located solutions at the
+/// starts of the stretches at this pressure that Mindlin's memory still holds, oldest first
+/// (`memory.rs`).
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Stretch {
     pub start: Model,
     pub slipped: Vec<f64>,
     pub work: f64,
+    pub memory: Vec<Model>,
 }
+
+/// Most stretch starts a memory holds; beyond, the oldest turning point goes (its loop is then
+/// never closed by superposition, `memory.rs`).
+const MEMORY: usize = 16;
 
 impl Marcher {
     /// The stretch the current increment continues, or the one it starts from the last located
@@ -147,6 +162,7 @@ impl Marcher {
                         }
                 })
         };
+        let mut memory = Vec::new();
         if let Some(mut stretch) = self.stretch.take() {
             if stretch.start.pressure == self.pressure && grows(&stretch.slipped) {
                 for (s, m) in stretch.slipped.iter_mut().zip(&moved) {
@@ -156,6 +172,7 @@ impl Marcher {
                 }
                 return Some(stretch);
             }
+            memory = stretch.memory;
         }
         let last = self.located.take()?;
         if last.pressure != self.pressure {
@@ -166,10 +183,18 @@ impl Marcher {
             return None;
         }
         slipped.copy_from_slice(&moved);
+        if memory.first().is_some_and(|m| m.pressure != self.pressure) {
+            memory.clear();
+        }
+        if memory.len() == MEMORY {
+            memory.remove(1);
+        }
+        memory.push(last.clone());
         Some(Stretch {
             start: last,
             slipped,
             work: 0.0,
+            memory,
         })
     }
 
@@ -188,6 +213,7 @@ impl Marcher {
             pressure: self.pressure.clone(),
             slip: self.slip.clone(),
             displacement: self.displacement,
+            ends: Vec::new(),
         }
     }
 
@@ -317,7 +343,7 @@ impl Marcher {
 
     /// Keeps at most [`PIECES_PER_CELL`] pieces per cell: the oldest beyond go into the cell's
     /// mean and slope.
-    fn fold_oldest(&self, pieces: &mut Vec<Piece>, mean: &mut [f64], slope: &mut [f64]) {
+    pub(super) fn fold_oldest(&self, pieces: &mut Vec<Piece>, mean: &mut [f64], slope: &mut [f64]) {
         let w = self.width;
         let mut count = vec![0usize; self.x.len()];
         for p in pieces.iter() {

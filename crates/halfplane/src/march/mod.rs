@@ -69,6 +69,8 @@ mod intervals;
 mod kernel;
 mod layout;
 mod marcher;
+#[cfg_attr(not(feature = "sub-cell"), allow(dead_code))]
+mod memory;
 mod moments;
 mod predict;
 mod report;
