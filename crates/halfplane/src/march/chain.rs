@@ -121,11 +121,21 @@ pub(super) struct Stretch {
     pub start: Model,
     pub slipped: Vec<f64>,
     pub work: f64,
-    pub memory: Vec<Model>,
+    pub memory: Memory,
 }
 
-/// Most stretch starts a memory holds; beyond, the oldest turning point goes (its loop is then
-/// never closed by superposition, `memory.rs`).
+/// The located solutions at the starts of the stretches at one pressure that Mindlin's memory
+/// holds, oldest first, and whether the oldest is where they all began (`memory.rs`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(super) struct Memory {
+    pub turns: Vec<Model>,
+    /// The first start is still held: nothing was forgotten for want of room.
+    pub rooted: bool,
+}
+
+/// Most stretch starts a memory holds; beyond, the oldest goes and the memory is no longer
+/// rooted (an excursion that would close a loop beyond it is solved from its stretch's start,
+/// `memory.rs`).
 const MEMORY: usize = 16;
 
 impl Marcher {
@@ -162,7 +172,7 @@ impl Marcher {
                         }
                 })
         };
-        let mut memory = Vec::new();
+        let mut memory = Memory::default();
         if let Some(mut stretch) = self.stretch.take() {
             if stretch.start.pressure == self.pressure && grows(&stretch.slipped) {
                 for (s, m) in stretch.slipped.iter_mut().zip(&moved) {
@@ -183,13 +193,14 @@ impl Marcher {
             return None;
         }
         slipped.copy_from_slice(&moved);
-        if memory.first().is_some_and(|m| m.pressure != self.pressure) {
-            memory.clear();
+        if memory.turns.is_empty() {
+            memory.rooted = true;
         }
-        if memory.len() == MEMORY {
-            memory.remove(1);
+        if memory.turns.len() == MEMORY {
+            memory.turns.remove(0);
+            memory.rooted = false;
         }
-        memory.push(last.clone());
+        memory.turns.push(last.clone());
         Some(Stretch {
             start: last,
             slipped,
