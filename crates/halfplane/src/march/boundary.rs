@@ -133,26 +133,8 @@ impl Marcher {
                 .map(|(s, d)| s + d)
                 .collect();
             let displacement = base_displacement - c_disp * self.shift;
-            let mut kinks = Vec::with_capacity(lay.ends.len());
-            for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
-                let pressure = self.pressure_at(e.at)?;
-                kinks.push(TractionKink {
-                    x: e.at,
-                    root: if e.side > 0.0 {
-                        Edge::Left
-                    } else {
-                        Edge::Right
-                    },
-                    amplitude: sol.amplitude,
-                    shear: e.sign * self.friction * pressure,
-                    pressure,
-                });
-            }
-            let new = lay.ends.iter().zip(&kinks).map(|(e, k)| Kink {
-                x: e.at,
-                side: e.side,
-                amplitude: k.amplitude,
-            });
+            let amplitudes: Vec<f64> = self.end_solutions.iter().map(|s| s.amplitude).collect();
+            let (kinks, new) = self.kinks_of(&lay, &amplitudes)?;
             let kept = self.kept_kinks(&lay, start, new);
             self.located = Some(Model {
                 centre: traction.clone(),
@@ -175,6 +157,37 @@ impl Marcher {
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
         Ok(solves)
+    }
+
+    /// The kinks of the boundaries of `lay` with the square roots' whole `amplitudes`: as
+    /// reported (for the stresses' node form) and as a located solution keeps them.
+    pub(super) fn kinks_of(
+        &self,
+        lay: &Layout,
+        amplitudes: &[f64],
+    ) -> Result<(Vec<TractionKink>, impl Iterator<Item = Kink>)> {
+        let mut kinks = Vec::with_capacity(lay.ends.len());
+        let mut new = Vec::with_capacity(lay.ends.len());
+        for (e, &amplitude) in lay.ends.iter().zip(amplitudes) {
+            let pressure = self.pressure_at(e.at)?;
+            kinks.push(TractionKink {
+                x: e.at,
+                root: if e.side > 0.0 {
+                    Edge::Left
+                } else {
+                    Edge::Right
+                },
+                amplitude,
+                shear: e.sign * self.friction * pressure,
+                pressure,
+            });
+            new.push(Kink {
+                x: e.at,
+                side: e.side,
+                amplitude,
+            });
+        }
+        Ok((kinks, new.into_iter()))
     }
 
     /// The located solve of the increment from the stretch's start (over the load change since

@@ -27,13 +27,12 @@
 //!
 //! Owns the choice of the turning point and the superposition. Never changes the march's state.
 
-use super::boundary::{TractionKink, View};
+use super::boundary::View;
 use super::chain::Memory;
-use super::chain::{Cells, Kink, Model, Piece};
+use super::chain::{Cells, Model, Piece};
 use super::layout::{Layout, Role};
 use super::marcher::Marcher;
 use crate::error::Result;
-use crate::labels::Edge;
 use crate::load::LoadPoint;
 
 impl Marcher {
@@ -172,26 +171,10 @@ impl Marcher {
         let slip = add(&reference.slip, &self.sub_slip);
         let c_disp = self.compliance / std::f64::consts::PI;
         let displacement = reference.displacement - factor * c_disp * self.shift;
-        let mut kinks = Vec::with_capacity(lay.ends.len());
-        for (e, sol) in lay.ends.iter().zip(&self.end_solutions) {
-            let pressure = self.pressure_at(e.at)?;
-            kinks.push(TractionKink {
-                x: e.at,
-                root: if e.side > 0.0 {
-                    Edge::Left
-                } else {
-                    Edge::Right
-                },
-                amplitude: factor * sol.amplitude + reference.kink_at(e.at, e.side, w),
-                shear: e.sign * self.friction * pressure,
-                pressure,
-            });
-        }
-        let new = lay.ends.iter().zip(&kinks).map(|(e, k)| Kink {
-            x: e.at,
-            side: e.side,
-            amplitude: k.amplitude,
-        });
+        let amplitudes: Vec<f64> = (lay.ends.iter().zip(&self.end_solutions))
+            .map(|(e, s)| factor * s.amplitude + reference.kink_at(e.at, e.side, w))
+            .collect();
+        let (kinks, new) = self.kinks_of(&lay, &amplitudes)?;
         let kept = self.kept_kinks(&lay, Some(reference), new);
         let (mut mean, mut slope) = (
             add(&reference.cells.mean, &rest.mean),
