@@ -102,14 +102,23 @@ impl Marcher {
         }
         let mut solves = self.located_from(&cell_level, d_sigma, load, step)?;
         let mut from_start = self.stretch.is_some();
-        if from_start && self.start_kink_in_an_element() {
+        if from_start && (self.start_kink_in_an_element() || !self.start_keeps_limit()) {
             // The stretch's start holds a kink inside a new boundary's element, which replaces
-            // its cells' start: this increment is solved from the cell level (the stretch goes
-            // on for the next).
+            // its cells' start, or the solution from it breaks the friction limit (2.2e-3 f p0,
+            // a reviewer's history: Q to 300, then Q and bulk stress cycled in phase): this
+            // increment is solved from the cell level (the stretch goes on for the next).
             let stretch = self.stretch.take();
             solves += self.located_from(&cell_level, d_sigma, load, step)?;
             self.stretch = stretch;
             from_start = false;
+        }
+        let from_cells: Vec<f64> = (cell_level.iter().zip(&self.dq))
+            .map(|(q, d)| q + d)
+            .collect();
+        if !from_start && !self.keeps_limit(&from_cells) {
+            // Solved from the cell level it breaks the limit too (the same history): the
+            // increment reports the cell-level solution.
+            self.layout = None;
         }
         self.located = None;
         if let (Some(lay), Some(cells)) = (self.layout.take(), self.end_model.take()) {
@@ -218,6 +227,17 @@ impl Marcher {
         let solves = self.located_solve(d_sigma, load.shear(), step);
         self.traction.copy_from_slice(cell_level);
         solves
+    }
+
+    /// Whether the located solve from the stretch's start just made keeps the friction limit.
+    fn start_keeps_limit(&self) -> bool {
+        let Some(s) = &self.stretch else {
+            return true;
+        };
+        let traction: Vec<f64> = (s.start.centre.iter().zip(&self.dq))
+            .map(|(q, d)| q + d)
+            .collect();
+        self.keeps_limit(&traction)
     }
 
     /// Whether a kink of the stretch's start lies within three cells of a new boundary without

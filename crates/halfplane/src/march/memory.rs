@@ -143,12 +143,16 @@ impl Marcher {
     /// probe, broke it by 0.22 f p0 at 400 cells; the increment is then solved from its
     /// stretch's start).
     fn plausible(&self) -> bool {
-        let Some(view) = &self.view else {
-            return false;
-        };
+        self.view
+            .as_ref()
+            .is_some_and(|v| self.keeps_limit(&v.traction))
+    }
+
+    /// Whether `traction` keeps the friction limit `f p` at every centre, to 1e-6 of `f p_max`.
+    pub(super) fn keeps_limit(&self, traction: &[f64]) -> bool {
         let f = self.friction;
         let scale = f * self.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
-        view.traction
+        traction
             .iter()
             .zip(&self.pressure)
             .all(|(q, p)| q.abs() <= f * p + 1e-6 * scale)
