@@ -102,7 +102,12 @@ impl Marcher {
         }
         let mut solves = self.located_from(&cell_level, d_sigma, load, step)?;
         let mut from_start = self.stretch.is_some();
-        if from_start && (self.start_kink_in_an_element() || !self.start_keeps_limit()) {
+        let start_breaks_limit = || {
+            self.stretch
+                .as_ref()
+                .is_some_and(|s| !self.keeps_limit_from(&s.start.centre))
+        };
+        if from_start && (self.start_kink_in_an_element() || start_breaks_limit()) {
             // The stretch's start holds a kink inside a new boundary's element, which replaces
             // its cells' start, or the solution from it breaks the friction limit (2.2e-3 f p0,
             // a reviewer's history: Q to 300, then Q and bulk stress cycled in phase): this
@@ -112,10 +117,7 @@ impl Marcher {
             self.stretch = stretch;
             from_start = false;
         }
-        let from_cells: Vec<f64> = (cell_level.iter().zip(&self.dq))
-            .map(|(q, d)| q + d)
-            .collect();
-        if !from_start && !self.keeps_limit(&from_cells) {
+        if !from_start && !self.keeps_limit_from(&cell_level) {
             // Solved from the cell level it breaks the limit too (the same history): the
             // increment reports the cell-level solution.
             self.layout = None;
@@ -229,14 +231,10 @@ impl Marcher {
         solves
     }
 
-    /// Whether the located solve from the stretch's start just made keeps the friction limit.
-    fn start_keeps_limit(&self) -> bool {
-        let Some(s) = &self.stretch else {
-            return true;
-        };
-        let traction: Vec<f64> = (s.start.centre.iter().zip(&self.dq))
-            .map(|(q, d)| q + d)
-            .collect();
+    /// Whether the located solve just made, added to the start `base` (centre values), keeps
+    /// the friction limit.
+    fn keeps_limit_from(&self, base: &[f64]) -> bool {
+        let traction: Vec<f64> = base.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
         self.keeps_limit(&traction)
     }
 

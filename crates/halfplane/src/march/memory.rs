@@ -52,42 +52,40 @@ impl Marcher {
             return Ok(None);
         }
         let mut solves = 0;
-        loop {
-            let Some(memory) = self.stretch.as_ref().map(|s| &s.memory) else {
-                return Ok(None);
-            };
-            let Some(reference) = memory.turns.last() else {
-                return Ok(None);
-            };
+        // Each turning point is taken out of the memory while it is tried (the solve and the
+        // superposition need the marcher), and put back unless the excursion has closed its loop.
+        while let Some(reference) = self.stretch.as_mut().and_then(|s| s.memory.turns.pop()) {
+            let memory = self.stretch.as_ref().map(|s| &s.memory);
             // The first start, at rest: the excursion has closed every loop since, and is the
             // first loading. A first start with traction is no turning point.
-            let first = memory.turns.len() == 1 && memory.rooted;
+            let first = memory.is_some_and(|m| m.turns.is_empty() && m.rooted);
             let at_rest = first && reference.centre.iter().all(|q| *q == 0.0);
             if first && !at_rest {
+                self.remember(reference);
                 return Ok(None);
             }
             let factor = if at_rest { 1.0 } else { 2.0 };
             let shear = (load.shear() - reference.load.shear()) / factor;
             let d_sigma = (load.bulk() - reference.load.bulk()) / factor;
             solves += self.solved_from_rest(d_sigma, shear, step)?;
-            let reference = self
-                .stretch
-                .as_ref()
-                .and_then(|s| s.memory.turns.last())
-                .expect("the reference is still held");
-            if at_rest || self.within(reference) {
-                let reference = reference.clone();
+            if at_rest || self.within(&reference) {
                 self.superpose(&reference, factor, load)?;
+                self.remember(reference);
                 if self.plausible() {
                     return Ok(Some(solves));
                 }
                 (self.view, self.located) = (None, None);
                 return Ok(None);
             }
-            // The excursion has closed the reference's loop.
-            if let Some(s) = self.stretch.as_mut() {
-                s.memory.turns.pop();
-            }
+            // The excursion has closed the reference's loop: it stays out.
+        }
+        Ok(None)
+    }
+
+    /// Puts a turning point taken out by [`Marcher::superposed`] back on top of the memory.
+    fn remember(&mut self, reference: Model) {
+        if let Some(s) = self.stretch.as_mut() {
+            s.memory.turns.push(reference);
         }
     }
 
