@@ -160,11 +160,11 @@ impl Marcher {
     /// the work buffers, as the located solution the next increments may start from and as the
     /// view reported.
     fn superpose(&mut self, reference: &Model, factor: f64, load: LoadPoint) -> Result<()> {
-        let lay = self.layout.take().expect("a solve from rest has a layout");
-        let rest = self
-            .end_model
-            .take()
-            .expect("a solve from rest has a model");
+        let (Some(lay), Some(rest)) = (self.layout.take(), self.end_model.take()) else {
+            // A solve from rest always leaves both; without them nothing is reported, and
+            // `plausible` sends the increment to its stretch's start.
+            return Ok(());
+        };
         let w = self.width;
         let add = |a: &[f64], b: &[f64]| -> Vec<f64> {
             a.iter().zip(b).map(|(a, b)| a + factor * b).collect()
