@@ -174,15 +174,18 @@ impl Marcher {
         };
         let mut memory = Memory::default();
         if let Some(mut stretch) = self.stretch.take() {
-            if stretch.start.pressure == self.pressure && grows(&stretch.slipped) {
+            if stretch.start.pressure != self.pressure {
+                // Turning points at another pressure describe nothing here.
+            } else if grows(&stretch.slipped) {
                 for (s, m) in stretch.slipped.iter_mut().zip(&moved) {
                     if *s == 0.0 {
                         *s = *m;
                     }
                 }
                 return Some(stretch);
+            } else {
+                memory = stretch.memory;
             }
-            memory = stretch.memory;
         }
         let last = self.located.take()?;
         if last.pressure != self.pressure {

@@ -565,10 +565,11 @@ impl Marcher {
         self.displacement -= c_disp * shift;
         self.shift = shift;
         let energy = self.dissipation(ends_start, target.ends(), step)?;
-        if last && self.locates() {
+        let unchanged = self.normal_unchanged(&load);
+        if last && self.locates() && unchanged {
             passes += self.view(load, &target, d_sigma, step)?;
         } else {
-            self.view = None;
+            self.unlocated(unchanged);
         }
         self.commit(load, target);
         Ok((energy, passes))

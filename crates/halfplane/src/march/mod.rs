@@ -35,7 +35,8 @@
 //! Stick-slip boundaries inside cells (optional, `MarchOptions::with_sub_cell_boundaries`): the
 //! cell-level active set puts every zone end at a cell edge, so the traction error near a
 //! stick-slip boundary is of the order `K sqrt(w)` (K the square-root amplitude there). With the
-//! option, each increment's last sub-step is solved once more with each zone that ends next to
+//! option, each increment at an unchanged normal load (where it changes the cell-level
+//! solution is reported) has its last sub-step solved once more with each zone that ends next to
 //! slipping cells bounded inside the cells, the traction there carrying the boundary's square
 //! root, and the boundaries placed where the stick side's traction meets the limit without a
 //! jump (`boundary.rs`); the increment reports that solution, the march goes on from the
