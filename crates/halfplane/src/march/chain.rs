@@ -125,12 +125,15 @@ pub(super) struct Stretch {
 }
 
 /// The located solutions at the starts of the stretches at one pressure that Mindlin's memory
-/// holds, oldest first, and whether the oldest is where they all began (`memory.rs`).
+/// holds, oldest first, whether the oldest is where they all began, and whether the newest is
+/// the current stretch's own start (`memory.rs`).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub(super) struct Memory {
     pub turns: Vec<Model>,
     /// The first start is still held: nothing was forgotten for want of room.
     pub rooted: bool,
+    /// The newest turn is the current stretch's start (its loop has not closed).
+    pub start_on_top: bool,
 }
 
 /// Most stretch starts a memory holds; beyond, the oldest goes and the memory is no longer
@@ -204,6 +207,7 @@ impl Marcher {
             memory.rooted = false;
         }
         memory.turns.push(last.clone());
+        memory.start_on_top = true;
         Some(Stretch {
             start: last,
             slipped,

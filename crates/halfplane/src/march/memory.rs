@@ -20,10 +20,15 @@
 //! located solve starts from rest, as Cattaneo's does (2e-4 f p0 at 400 cells), and the
 //! turning points are added as values.
 //!
-//! The rule needs one-parametric loading ([`one_line`]); a memory that has lost turning points
-//! for want of room takes no excursion from rest (`chain.rs`); and a superposed traction that
-//! breaks the friction limit is not reported. In each case the increment is solved from its
-//! stretch's start instead. A reviewer's probes found each needed (docs/convergence.md).
+//! The rule needs one-parametric loading ([`one_line`]) for every turning point but the
+//! stretch's own start: from that start the superposition holds for any path, since the
+//! stretch's slip zones only grew (in its new slip zones the traction goes from `-s f p` to
+//! `s f p`, in its stick zone the displacement stays rigid, and `within` checks that the solve
+//! from rest slips only where the start was at the opposite limit). A memory that has lost
+//! turning points for want of room takes no excursion from rest (`chain.rs`); and a superposed
+//! traction that breaks the friction limit is not reported. In each case the increment is
+//! solved from its stretch's start instead. A reviewer's probes found each needed
+//! (docs/convergence.md).
 //!
 //! Owns the choice of the turning point and the superposition. Never changes the march's state.
 
@@ -36,32 +41,44 @@ use crate::error::Result;
 use crate::load::LoadPoint;
 
 impl Marcher {
-    /// The increment located by Mindlin's memory, when the loads since the memory's first start
-    /// lie on one line in the plane of shear and bulk stress ([`one_line`]) and the memory holds
-    /// a turning point whose slip zones contain the increment's (or, rooted, the pressed state
-    /// at rest): sets the located solution and the view and returns the solves used; `None`
-    /// otherwise (the stretch's start, or the cell level, is solved from instead). Forgets the
-    /// turning points whose loops the increment has closed.
+    /// The increment located by Mindlin's memory, when the memory holds a turning point whose
+    /// slip zones contain the increment's (or, rooted, the pressed state at rest): the stretch's
+    /// own start on any path, older ones when the loads since the memory's first start lie on
+    /// one line in the plane of shear and bulk stress ([`one_line`]). Sets the located solution
+    /// and the view and returns the solves used; `None` otherwise (the stretch's start, or the
+    /// cell level, is solved from instead). Forgets the turning points whose loops the
+    /// increment has closed.
     pub(super) fn superposed(&mut self, load: LoadPoint, step: usize) -> Result<Option<usize>> {
         let Some(stretch) = self.stretch.as_mut() else {
             return Ok(None);
         };
         if !one_line(&stretch.memory, &load) {
-            // The path has left the line: what the memory holds no longer describes the state.
-            stretch.memory = Memory::default();
-            return Ok(None);
+            // The path has left the line: the turning points before the stretch's start no
+            // longer describe the state. The start itself still does (below).
+            let memory = &mut stretch.memory;
+            let start = memory.start_on_top.then(|| memory.turns.pop()).flatten();
+            *memory = Memory {
+                start_on_top: start.is_some(),
+                turns: start.into_iter().collect(),
+                rooted: false,
+            };
         }
         let mut solves = 0;
         // Each turning point is taken out of the memory while it is tried (the solve and the
         // superposition need the marcher), and put back unless the excursion has closed its loop.
-        while let Some(reference) = self.stretch.as_mut().and_then(|s| s.memory.turns.pop()) {
-            let memory = self.stretch.as_ref().map(|s| &s.memory);
-            // The first start, at rest: the excursion has closed every loop since, and is the
-            // first loading. A first start with traction is no turning point.
-            let first = memory.is_some_and(|m| m.turns.is_empty() && m.rooted);
-            let at_rest = first && reference.centre.iter().all(|q| *q == 0.0);
+        while let Some(memory) = self.stretch.as_mut().map(|s| &mut s.memory) {
+            let is_start = std::mem::take(&mut memory.start_on_top);
+            let Some(reference) = memory.turns.pop() else {
+                break;
+            };
+            // The stretch's own start holds for any path (the stretch's slips only grew since
+            // it); an older turning point only by the one-parametric memory, and a first start
+            // only at rest: the excursion has then closed every loop since, and is the first
+            // loading. A first start with traction is no turning point.
+            let first = !is_start && memory.turns.is_empty() && memory.rooted;
+            let at_rest = (is_start || first) && reference.centre.iter().all(|q| *q == 0.0);
             if first && !at_rest {
-                self.remember(reference);
+                self.remember(reference, is_start);
                 return Ok(None);
             }
             let factor = if at_rest { 1.0 } else { 2.0 };
@@ -70,7 +87,7 @@ impl Marcher {
             solves += self.solved_from_rest(d_sigma, shear, step)?;
             if at_rest || self.within(&reference) {
                 self.superpose(&reference, factor, load)?;
-                self.remember(reference);
+                self.remember(reference, is_start);
                 if self.plausible() {
                     return Ok(Some(solves));
                 }
@@ -82,10 +99,12 @@ impl Marcher {
         Ok(None)
     }
 
-    /// Puts a turning point taken out by [`Marcher::superposed`] back on top of the memory.
-    fn remember(&mut self, reference: Model) {
+    /// Puts a turning point taken out by [`Marcher::superposed`] back on top of the memory,
+    /// marked as the stretch's start if it was.
+    fn remember(&mut self, reference: Model, is_start: bool) {
         if let Some(s) = self.stretch.as_mut() {
             s.memory.turns.push(reference);
+            s.memory.start_on_top = is_start;
         }
     }
 
