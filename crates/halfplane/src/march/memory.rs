@@ -21,10 +21,12 @@
 //! turning points are added as values.
 //!
 //! The rule needs one-parametric loading ([`one_line`]) for every turning point but the
-//! stretch's own start: from that start the superposition holds for any path, since the
-//! stretch's slip zones only grew (in its new slip zones the traction goes from `-s f p` to
-//! `s f p`, in its stick zone the displacement stays rigid, and `within` checks that the solve
-//! from rest slips only where the start was at the opposite limit). A memory that has lost
+//! stretch's own start: from that start the superposition holds for any path. Within a stretch
+//! each point slips one way and is still slipping (`chain.rs`), so the state is the solution of
+//! a single step from the start, a convex problem with one solution at constant pressure; the
+//! start plus twice the solve from rest is admissible, so it is that solution, when `within`
+//! finds the solve slipping only where the start was at the opposite limit (`-s f p` to
+//! `s f p`) and `plausible` finds the limit kept elsewhere. A memory that has lost
 //! turning points for want of room takes no excursion from rest (`chain.rs`); and a superposed
 //! traction that breaks the friction limit is not reported. In each case the increment is
 //! solved from its stretch's start instead. A reviewer's probes found each needed

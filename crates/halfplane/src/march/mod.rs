@@ -35,12 +35,12 @@
 //! Stick-slip boundaries inside cells (optional, `MarchOptions::with_sub_cell_boundaries`): the
 //! cell-level active set puts every zone end at a cell edge, so the traction error near a
 //! stick-slip boundary is of the order `K sqrt(w)` (K the square-root amplitude there). With the
-//! option, each increment at an unchanged normal load (where it changes the cell-level
-//! solution is reported) has its last sub-step solved once more with each zone that ends next to
-//! slipping cells bounded inside the cells, the traction there carrying the boundary's square
-//! root, and the boundaries placed where the stick side's traction meets the limit without a
-//! jump (`boundary.rs`); the increment reports that solution, the march goes on from the
-//! cell-level one.
+//! option, each increment at an unchanged normal load, P and M (where either changes, the
+//! cell-level solution is reported), has its last sub-step solved once more with each zone that
+//! ends next to slipping cells bounded inside the cells, the traction there carrying the
+//! boundary's square root, and the boundaries placed where the stick side's traction meets the
+//! limit without a jump (`boundary.rs`); the increment reports that solution, the march goes on
+//! from the cell-level one.
 //!
 //! Stick and slip are reported kinematically, by the slip increment: a cell is labelled stuck in
 //! an increment when it slid less than `slip_tolerance` times `A f P`. That threshold labels only;

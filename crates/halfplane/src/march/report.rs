@@ -12,7 +12,7 @@
 //! The energy: within a stretch the pressure is constant and every cell slips one way at the
 //! limit `f p`, so the Coulomb work of the increment is `integral f p |ds| dx` exactly in time
 //! (Johnson, *Contact Mechanics*, section 7.2); it is summed by the limit's exact cell means
-//! times the centres' slips (midpoint in space). An increment whose normal load changes is not
+//! times the centres' slips (midpoint in space). An increment whose P or M changes is not
 //! located (`marcher.rs`), so its slip and energy are the cell-level march's (`dissipation.rs`).
 //!
 //! Owns the reported slip, displacement and energy. Never changes the state the march goes on
@@ -50,14 +50,15 @@ impl Marcher {
         cfg!(feature = "sub-cell") && self.options.sub_cell() && self.gap.is_none()
     }
 
-    /// Whether the normal load of a sub-step to `load` is the last one's, so that it may be
-    /// located: where it changes, the located solve (of the last sub-step, from the cell level)
-    /// was worse than the cell level near the contact edges (docs/convergence.md, "Where the
-    /// normal load changes"). A history interpolated between equal normal loads moves them by
-    /// rounding, which is no change.
+    /// Whether the normal loads of a sub-step to `load`, P and the moment M, are the last one's
+    /// (so its pressure is), so that it may be located: where either changes, the located solve
+    /// (of the last sub-step, from the cell level) was worse than the cell level near the
+    /// contact edges (docs/convergence.md, "Where the normal load changes"). A history
+    /// interpolated between equal loads moves them by rounding, which is no change.
     pub(super) fn normal_unchanged(&self, load: &LoadPoint) -> bool {
+        let same = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs());
         self.load
-            .is_some_and(|l| (l.normal() - load.normal()).abs() <= 1e-12 * load.normal())
+            .is_some_and(|l| same(l.normal(), load.normal()) && same(l.moment(), load.moment()))
     }
 
     /// A sub-step not located: nothing to report, and where the normal load changed

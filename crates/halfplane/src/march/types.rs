@@ -151,11 +151,12 @@ impl MarchOptions {
     /// is what the increment reports: the fields' traction, their square-root kinks (which the
     /// stresses' node form takes), the ends of the stick intervals, the slips and the relative
     /// displacement and the energy (`docs/convergence.md`, "Slips and energies with located
-    /// boundaries"). Only increments at an unchanged normal load are located: where it changes,
-    /// the located solve was worse than the cell level near the contact edges, and the
-    /// increment reports the cell-level solution ("Where the normal load changes"). The largest traction error of a Cattaneo
-    /// load falls from 8e-3 to 2e-4 of f p0 at 400 cells, the slip range's of its loop from
-    /// 5.6e-4 to 3.4e-5 of the largest range and the energy per cycle's from 2.1e-4 to 1.5e-5.
+    /// boundaries"). Only increments at an unchanged normal load, P and moment, are located:
+    /// where either changes, the located solve was worse than the cell level near the contact
+    /// edges, and the increment reports the cell-level solution ("Where the normal load
+    /// changes"). The largest traction error of a Cattaneo load falls from 8e-3 to 2e-4 of f p0
+    /// at 400 cells, the slip range's of its loop from 5.6e-4 to 3.4e-5 of the largest range
+    /// and the energy per cycle's from 2.1e-4 to 1.5e-5.
     /// The march goes on from the cell-level solution, so the active set and the cycle's
     /// repetition are the cell-level march's. It costs several solves per increment (`BENCHMARKS.md`),
     /// hence off by default. A march over a worn gap ([`Worn`](super::Worn), once its gap is
