@@ -1021,3 +1021,49 @@ fn where_the_moment_changes_the_cell_level_solution_is_reported_too() {
         "moment blocks: located {moved:e} f p0 from the cell level where M changes, {rest:e} elsewhere"
     );
 }
+
+#[test]
+fn a_dwell_reports_the_last_located_solution() {
+    // Q to 280, then 20 nested loops of falling amplitude with the bulk stress stepped through
+    // -30, 0, 30, each followed by a repeated row (a reviewer's history). In exact theory a
+    // dwell moves nothing; solved again by another route (from the stretch's start after an
+    // increment solved from the cell level), the located traction moved by 3.2e-2 f p0 over a
+    // dwell at 400 cells and one energy increment was -7.6e-7 of 0.24. A dwell now reports the
+    // last located solution: asserted unchanged to 1e-12 f p0 with no energy, and no energy
+    // increment anywhere below -1e-12 of the total.
+    let mut rows: Vec<[f64; 3]> = vec![[P, 0.0, 0.0]];
+    rows.extend((1..=6).map(|i| [P, 280.0 * i as f64 / 6.0, 0.0]));
+    for k in 0..20 {
+        let from = *rows.last().unwrap();
+        let to = [
+            P,
+            280.0 * (1.0 - (k as f64 + 1.0) / 22.0) * if k % 2 == 0 { -1.0 } else { 1.0 },
+            30.0 * ((k % 3) as f64 - 1.0),
+        ];
+        rows.extend((1..=4).map(|i| {
+            let t = i as f64 / 4.0;
+            [
+                P,
+                from[1] + t * (to[1] - from[1]),
+                from[2] + t * (to[2] - from[2]),
+            ]
+        }));
+        rows.push(to);
+    }
+    let (r, kept) = run(&rows, 400);
+    let f_p0 = F * hertz(kept[0].0.half_width, 0.0);
+    let moved = (1..kept.len())
+        .filter(|&k| rows[k] == rows[k - 1])
+        .map(|k| {
+            let dwell = apart(&kept[k].1, &kept[k - 1].1, f_p0);
+            dwell.max(kept[k].0.energy_increment.abs() / f_p0)
+        })
+        .fold(0.0, f64::max);
+    let energy = r.steps.last().unwrap().energy;
+    let least = (r.steps.iter().map(|s| s.energy_increment)).fold(0.0, f64::min);
+    eprintln!("dwells: located traction moved {moved:.1e} f p0; least energy increment {least:.1e} of {energy:.3e}");
+    assert!(
+        moved <= 1e-12 && least >= -1e-12 * energy,
+        "a dwell moved the located traction by {moved:e} f p0, or an energy increment is {least:e}"
+    );
+}
