@@ -547,6 +547,36 @@ impl Memory {
     }
 }
 
+/// The next number in [0, 1) of a linear congruential sequence (Knuth's MMIX constants).
+fn lcg(seed: &mut u64) -> f64 {
+    *seed = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    (*seed >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// P pressed to 1000 in ten increments, then `count` reversals of Q, ten increments each, to
+/// `|Q|` drawn from `[low, low + span)` (`seed`), the bulk stress `bulk_ratio` times Q; with the
+/// last Q and the sign of the next reversal.
+fn random_reversals(
+    seed: u64,
+    count: usize,
+    [low, span]: [f64; 2],
+    bulk_ratio: f64,
+) -> (Vec<[f64; 3]>, f64, f64) {
+    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
+    let (mut seed, mut q, mut sign) = (seed, 0.0f64, 1.0f64);
+    for _ in 0..count {
+        let target = sign * (low + span * lcg(&mut seed));
+        rows.extend((1..=10).map(|i| {
+            let shear = q + (target - q) * i as f64 / 10.0;
+            [P, shear, bulk_ratio * shear]
+        }));
+        (q, sign) = (target, -sign);
+    }
+    (rows, q, sign)
+}
+
 #[test]
 fn variable_amplitudes_follow_mindlins_memory_at_every_increment() {
     // 40 reversals between |Q| = 100 and 300 (ten increments each), then beyond every earlier
@@ -558,16 +588,7 @@ fn variable_amplitudes_follow_mindlins_memory_at_every_increment() {
     // 4.3e-11 f p0. Solved from the last increment's located start, as before `memory.rs`:
     // 4.2e-2, more than the cell level, and 1.7e-3 from the load at once. Bounds: 4e-3 and a
     // fifth of the cell level's; 1e-9.
-    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
-    let (mut seed, mut q, mut sign) = (12345u64, 0.0f64, 1.0f64);
-    for _ in 0..40 {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        let target = sign * (100.0 + 200.0 * ((seed >> 11) as f64 / (1u64 << 53) as f64));
-        rows.extend((1..=10).map(|i| [P, q + (target - q) * i as f64 / 10.0, 0.0]));
-        (q, sign) = (target, -sign);
-    }
+    let (mut rows, q, sign) = random_reversals(12345, 40, [100.0, 200.0], 0.0);
     let last = sign * 317.0;
     rows.extend((1..=10).map(|i| [P, q + (last - q) * i as f64 / 10.0, 0.0]));
     let (_, kept) = run(&rows, 400);
@@ -895,10 +916,7 @@ fn where_the_normal_load_changes_the_cell_level_solution_is_reported() {
         rows.extend((1..=5).map(|i| [from + (p - from) * i as f64 / 5.0, 0.0, 0.0]));
         let mut q = 0.0;
         for _ in 0..6 {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            let target = sign * (50.0 + 300.0 * ((seed >> 11) as f64 / (1u64 << 53) as f64));
+            let target = sign * (50.0 + 300.0 * lcg(&mut seed));
             rows.extend((1..=8).map(|i| [p, q + (target - q) * i as f64 / 8.0, 0.0]));
             (q, sign) = (target, -sign);
         }
@@ -936,19 +954,7 @@ fn with_bulk_stress_in_proportion_the_memory_is_nowell_and_hills() {
     // P: one-parametric, so the memory rule holds with Nowell and Hills's offset first loading
     // (`Memory`). Largest error over every increment, measured: located 3.2e-3 f p0 at 400 cells
     // (cell level 3.4e-2). Bounds: 4e-3 and a fifth of the cell level's.
-    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
-    let (mut seed, mut q, mut sign) = (5u64, 0.0f64, 1.0f64);
-    for _ in 0..30 {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        let target = sign * (50.0 + 300.0 * ((seed >> 11) as f64 / (1u64 << 53) as f64));
-        rows.extend((1..=10).map(|i| {
-            let shear = q + (target - q) * i as f64 / 10.0;
-            [P, shear, 0.2 * shear]
-        }));
-        (q, sign) = (target, -sign);
-    }
+    let (rows, _, _) = random_reversals(5, 30, [50.0, 300.0], 0.2);
     let (located, cell_level) = (
         memory_error(&run(&rows, 400).1, 0.2),
         memory_error(&run_cell_level(&rows, 400).1, 0.2),
@@ -975,15 +981,9 @@ fn where_the_moment_changes_the_cell_level_solution_is_reported_too() {
     let mut rows = vec![[P, 0.0, 0.0, 0.0]];
     rows.extend((1..=5).map(|i| [P, 30.0 * i as f64, 0.0, 0.0]));
     let (mut seed, mut last) = (7u64, [P, 150.0, 0.0, 0.0]);
-    let next = |seed: &mut u64| {
-        *seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (*seed >> 11) as f64 / (1u64 << 53) as f64
-    };
     for k in 0..12 {
-        let q = if k % 2 == 0 { -1.0 } else { 1.0 } * (80.0 + 150.0 * next(&mut seed));
-        let m = 40.0 * (2.0 * next(&mut seed) - 1.0);
+        let q = if k % 2 == 0 { -1.0 } else { 1.0 } * (80.0 + 150.0 * lcg(&mut seed));
+        let m = 40.0 * (2.0 * lcg(&mut seed) - 1.0);
         for (to, n) in [([P, q, 0.0, m], 6), ([P, 0.8 * q, 0.0, m], 3)] {
             rows.extend((1..=n).map(|i| {
                 let t = i as f64 / n as f64;
