@@ -73,8 +73,8 @@ impl Marcher {
             let Some(reference) = memory.turns.pop() else {
                 break;
             };
-            // The stretch's own start holds for any path (the stretch's slips only grew since
-            // it); an older turning point only by the one-parametric memory, and a first start
+            // The stretch's own start holds for any path (each point slipped one way since it);
+            // an older turning point only by the one-parametric memory, and a first start
             // only at rest: the excursion has then closed every loop since, and is the first
             // loading. A first start with traction is no turning point.
             let first = !is_start && memory.turns.is_empty() && memory.rooted;
