@@ -67,6 +67,18 @@ pub(super) struct View {
     pub displacement: f64,
 }
 
+impl View {
+    /// What a located solution reports, with its boundaries' `kinks` as reported.
+    pub(super) fn of(located: &Model, kinks: Vec<TractionKink>) -> Self {
+        Self {
+            traction: located.centre.clone(),
+            kinks,
+            slip: located.slip.clone(),
+            displacement: located.displacement,
+        }
+    }
+}
+
 impl Marcher {
     /// The increment solved again with its stick-slip boundaries located inside their cells
     /// (`refine`), for what the increment reports: its last sub-step from the cell-level state
@@ -89,12 +101,7 @@ impl Marcher {
             // A dwell moves nothing in exact theory: it reports the last located solution, which
             // a solve by another route (from the stretch's start after one from the cell level)
             // moved by up to 3.2e-2 f p0, with a negative energy (a reviewer's history).
-            self.view = Some(View {
-                traction: last.centre.clone(),
-                kinks: self.reported_kinks.clone(),
-                slip: last.slip.clone(),
-                displacement: last.displacement,
-            });
+            self.view = Some(View::of(last, self.reported_kinks.clone()));
             return Ok(0);
         }
         let saved = (
@@ -161,24 +168,20 @@ impl Marcher {
             let amplitudes: Vec<f64> = self.end_solutions.iter().map(|s| s.amplitude).collect();
             let (kinks, new) = self.kinks_of(&lay, &amplitudes)?;
             let kept = self.kept_kinks(&lay, start, new);
-            self.located = Some(Model {
-                centre: traction.clone(),
+            let located = Model {
+                centre: traction,
                 cells,
                 kinks: kept,
                 load,
                 pressure: self.pressure.clone(),
-                slip: slip.clone(),
+                slip,
                 displacement,
                 ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
-            });
+            };
             if !lay.ends.is_empty() || from_start {
-                self.view = Some(View {
-                    traction,
-                    kinks,
-                    slip,
-                    displacement,
-                });
+                self.view = Some(View::of(&located, kinks));
             }
+            self.located = Some(located);
         }
         (self.dq, self.sub_slip, self.known, self.g_known, self.shift) = saved;
         Ok(solves)

@@ -209,8 +209,8 @@ impl Marcher {
             ..p
         }));
         self.fold_oldest(&mut pieces, &mut mean, &mut slope);
-        self.located = Some(Model {
-            centre: traction.clone(),
+        let located = Model {
+            centre: traction,
             cells: Cells {
                 mean,
                 slope,
@@ -219,16 +219,12 @@ impl Marcher {
             kinks: kept,
             load,
             pressure: self.pressure.clone(),
-            slip: slip.clone(),
-            displacement,
-            ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
-        });
-        self.view = Some(View {
-            traction,
-            kinks,
             slip,
             displacement,
-        });
+            ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
+        };
+        self.view = Some(View::of(&located, kinks));
+        self.located = Some(located);
         Ok(())
     }
 }
