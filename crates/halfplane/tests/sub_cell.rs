@@ -1067,3 +1067,63 @@ fn a_dwell_reports_the_last_located_solution() {
         "a dwell moved the located traction by {moved:e} f p0, or an energy increment is {least:e}"
     );
 }
+
+#[test]
+fn a_start_kink_inside_a_new_boundary_element_keeps_its_place() {
+    // Q to 280, then 20 nested loops of falling amplitude with the bulk stress stepped between
+    // -30, 0 and 30 (off Mindlin's line, so each increment is solved from its stretch's start),
+    // then out to +-290. A new boundary often lands within a cell or two of a kink of that start,
+    // inside its element. Before 2026-11-27 a kink within half a cell was moved onto the
+    // boundary and one further in sent the increment to the cell-level start: 4.6e-2 f p0 at
+    // 400 cells against 10800 (cell level 4.6e-2) and 2.6e-2 at 1200 (cell level 1.8e-2). Now
+    // the element holds each such kink at its own place (`march/chain.rs`): 8.5e-3 and 1.6e-3
+    // against 10800 (`tests/convergence.rs`). Here against the located march at 1200 cells
+    // (coinciding centres): measured 8.5e-3 located, 4.7e-2 cell level; with the rule before,
+    // 3.4e-2 (its cell level the same, against its own 1200-cell march). Bound 1.5e-2 and a
+    // third of the cell level's.
+    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
+    let mut from = [0.0, 0.0];
+    let targets = std::iter::once([280.0, 0.0])
+        .chain((0..20).map(|k| {
+            let a = 280.0 * (1.0 - (k as f64 + 1.0) / 22.0);
+            [
+                if k % 2 == 0 { -a } else { a },
+                30.0 * ((k % 3) as f64 - 1.0),
+            ]
+        }))
+        .chain([[290.0, 10.0], [-290.0, -10.0]]);
+    for to in targets {
+        rows.extend((1..=4).map(|i| {
+            let t = i as f64 / 4.0;
+            [
+                P,
+                from[0] + t * (to[0] - from[0]),
+                from[1] + t * (to[1] - from[1]),
+            ]
+        }));
+        from = to;
+    }
+    let fine = run(&rows, 1200).1;
+    let f_p0 = F * hertz(fine[fine.len() - 1].0.half_width, 0.0);
+    let error = |coarse: &[(StepReport, Kept)]| {
+        coarse
+            .iter()
+            .zip(&fine)
+            .map(|((_, c), (_, f))| {
+                (0..c.traction.len())
+                    .map(|i| (c.traction[i] - f.traction[3 * i + 1]).abs())
+                    .fold(0.0, f64::max)
+            })
+            .fold(0.0, f64::max)
+            / f_p0
+    };
+    let (located, cell_level) = (
+        error(&run(&rows, 400).1),
+        error(&run_cell_level(&rows, 400).1),
+    );
+    eprintln!("nested loops, bulk stress stepped: {located:.2e} f p0 from 1200 cells (cell level {cell_level:.2e})");
+    assert!(
+        located < 1.5e-2 && located < cell_level / 3.0,
+        "a start's kink in a new element: {located:e} f p0 from 1200 cells (cell level {cell_level:e})"
+    );
+}

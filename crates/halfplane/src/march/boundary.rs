@@ -128,10 +128,9 @@ impl Marcher {
                 .as_ref()
                 .is_some_and(|s| !self.keeps_limit_from(&s.start.centre))
         };
-        if from_start && (self.start_kink_in_an_element() || start_breaks_limit()) {
-            // The stretch's start holds a kink inside a new boundary's element, which replaces
-            // its cells' start, or the solution from it breaks the friction limit (2.2e-3 f p0,
-            // a reviewer's history: Q to 300, then Q and bulk stress cycled in phase): this
+        if from_start && start_breaks_limit() {
+            // The solution from the stretch's start breaks the friction limit (2.2e-3 f p0, a
+            // reviewer's history: Q to 300, then Q and bulk stress cycled in phase): this
             // increment is solved from the cell level (the stretch goes on for the next).
             let stretch = self.stretch.take();
             solves += self.located_from(&cell_level, d_sigma, load, step)?;
@@ -166,8 +165,17 @@ impl Marcher {
                 .collect();
             let displacement = base_displacement - c_disp * self.shift;
             let amplitudes: Vec<f64> = self.end_solutions.iter().map(|s| s.amplitude).collect();
-            let (kinks, new) = self.kinks_of(&lay, &amplitudes)?;
-            let kept = self.kept_kinks(&lay, start, new);
+            let reported: Vec<f64> = (self.end_solutions.iter())
+                .map(|s| s.amplitude + s.nearby)
+                .collect();
+            let (kinks, new) = self.kinks_of(&lay, &reported, &amplitudes)?;
+            let w = self.width;
+            let took = |k: &Kink| {
+                start.is_some_and(|s| {
+                    (lay.ends.iter()).any(|e| s.held(e, w).iter().any(|h| h.merged && h.kink == *k))
+                })
+            };
+            let kept = self.kept_kinks(&lay, start, new, took);
             let located = Model {
                 centre: traction,
                 cells,
@@ -187,16 +195,18 @@ impl Marcher {
         Ok(solves)
     }
 
-    /// The kinks of the boundaries of `lay` with the square roots' whole `amplitudes`: as
-    /// reported (for the stresses' node form) and as a located solution keeps them.
+    /// The kinks of the boundaries of `lay`: as reported with the square roots' `reported`
+    /// amplitudes (for the stresses' node form) and as a located solution keeps them, with their
+    /// `kept` ones.
     pub(super) fn kinks_of(
         &self,
         lay: &Layout,
-        amplitudes: &[f64],
+        reported: &[f64],
+        kept: &[f64],
     ) -> Result<(Vec<TractionKink>, impl Iterator<Item = Kink>)> {
         let mut kinks = Vec::with_capacity(lay.ends.len());
         let mut new = Vec::with_capacity(lay.ends.len());
-        for (e, &amplitude) in lay.ends.iter().zip(amplitudes) {
+        for ((e, &amplitude), &whole) in lay.ends.iter().zip(reported).zip(kept) {
             let pressure = self.pressure_at(e.at)?;
             kinks.push(TractionKink {
                 x: e.at,
@@ -212,7 +222,8 @@ impl Marcher {
             new.push(Kink {
                 x: e.at,
                 side: e.side,
-                amplitude,
+                amplitude: whole,
+                window: e.window,
             });
         }
         Ok((kinks, new.into_iter()))
@@ -253,23 +264,6 @@ impl Marcher {
     fn keeps_limit_from(&self, base: &[f64]) -> bool {
         let traction: Vec<f64> = base.iter().zip(&self.dq).map(|(q, d)| q + d).collect();
         self.keeps_limit(&traction)
-    }
-
-    /// Whether a kink of the stretch's start lies within three cells of a new boundary without
-    /// being the one that boundary takes over (`chain.rs`, [`super::chain::Model::kink_at`]):
-    /// the element reaches up to two cells into the stick zone, and the slip part up to one out
-    /// (with two, 2.8e-4 f p0 after 40 random reversals at 1600 cells, with three 8.6e-5).
-    fn start_kink_in_an_element(&self) -> bool {
-        let (Some(s), Some(lay)) = (&self.stretch, &self.layout) else {
-            return false;
-        };
-        let w = self.width;
-        lay.ends.iter().any(|e| {
-            s.start.kinks.iter().any(|k| {
-                let d = (k.x - e.at).abs();
-                d < 3.0 * w && !(k.side == e.side && d < super::chain::SAME_KINK * w)
-            })
-        })
     }
 
     /// [`Marcher::refine`]; from a stretch's located start with no boundary to locate, the

@@ -19,8 +19,8 @@
 //! last increment's located solution at the same pressure; a stuck state (the pressed one, with
 //! no traction) is its own located solution, so a first loading is one stretch from it and each
 //! of its increments is located as if loaded in one. Otherwise the located solve starts from the
-//! cell-level state, as it always did, and so does an increment whose new boundary's element
-//! would swallow another kink of the start (`boundary.rs`).
+//! cell-level state, as it always did, and so does an increment whose solution from the start
+//! would break the friction limit (`boundary.rs`).
 //!
 //! Each stretch also carries the starts of the stretches before it at this pressure that
 //! Mindlin's memory still holds (turning points, and the first, at rest). Where one of them
@@ -32,9 +32,12 @@
 //! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
 //! and slope), exact pieces near each boundary (the element's affine parts, each root within
 //! `NEAR` cells), and the boundaries' kinks with their whole amplitudes. A boundary element
-//! replaces its cells' start; a kink of the start at the element's boundary goes back on the
-//! element as its square root (`evaluate.rs`), or an increment with no change of load moved the
-//! traction next to the boundary by 1.4e-3 f p0.
+//! replaces its cells' start; the start's kinks whose stick side it covers go back on it as
+//! square roots ([`Held`], `evaluate.rs`): without them an increment with no change of load
+//! moved the traction next to the boundary by 1.4e-3 f p0. Until 2026-11-27 only a kink within
+//! half a cell went back, moved onto the boundary, and an increment with another kink near the
+//! element was solved from the cell level instead: off Mindlin's line that left up to twice the
+//! cell level's error at 400 cells (docs/convergence.md, "Bulk stress").
 //!
 //! The cell-level state itself, and so the active set, the slips, the energy and the cycles'
 //! repetition, never sees any of it. Owns the located solutions' model, the stretch and its
@@ -42,7 +45,7 @@
 
 use super::evaluate::Special;
 use super::kernel::{Element, Shape};
-use super::layout::{Layout, Role};
+use super::layout::{Layout, Role, SoftEnd};
 use super::marcher::{Cell, Marcher};
 use crate::load::LoadPoint;
 
@@ -68,6 +71,8 @@ pub(super) struct Kink {
     /// Its stick side: 1 to the left of `x`, -1 to the right.
     pub side: f64,
     pub amplitude: f64,
+    /// The root's taper window ([`super::kernel::Shape::Root`]).
+    pub window: f64,
 }
 
 /// A located solution as the solve models it.
@@ -99,6 +104,83 @@ impl Model {
             .min_by(|a, b| (a.x - at).abs().total_cmp(&(b.x - at).abs()))
             .map_or(0.0, |k| k.amplitude)
     }
+
+    /// The kinks of this solution that boundary `e`'s element holds ([`Held`]): every kink with
+    /// `e`'s stick side inside the element, at its own place, and the nearest one on the slip
+    /// side within [`SAME_KINK`] cells, taken over by the boundary.
+    pub(super) fn held(&self, e: &SoftEnd, width: f64) -> Vec<Held> {
+        let [lo, hi] = e.support;
+        let mut held: Vec<Held> = self
+            .kinks
+            .iter()
+            .filter(|k| k.side == e.side && e.side * (e.at - k.x) > 0.0 && lo < k.x && k.x < hi)
+            .map(|k| Held {
+                kink: *k,
+                merged: false,
+            })
+            .collect();
+        let beyond = self
+            .kinks
+            .iter()
+            .filter(|k| {
+                k.side == e.side
+                    && e.side * (e.at - k.x) <= 0.0
+                    && (k.x - e.at).abs() < SAME_KINK * width
+            })
+            .min_by(|a, b| (a.x - e.at).abs().total_cmp(&(b.x - e.at).abs()));
+        held.extend(beyond.map(|k| Held {
+            kink: *k,
+            merged: true,
+        }));
+        held
+    }
+}
+
+/// A start's kink held on a boundary element, which replaces its cells' start (`evaluate.rs`).
+/// Inside the new stick zone it stays where it is: its root is zero between it and the
+/// boundary, so the element's ramp keeps the limit's slope at the boundary. On the slip side,
+/// where the new slip zone reaches it, the boundary takes it over (`merged`): its root goes on
+/// the boundary. Taking over kinks in the stick zone as well moved them by up to [`SAME_KINK`]
+/// cells (an error of order `K sqrt(distance)`), and a kink further inside the element was lost
+/// (`docs/convergence.md`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Held {
+    pub kink: Kink,
+    pub merged: bool,
+}
+
+impl Held {
+    /// Its square root on `e`'s element (unit amplitude), on its stick side only.
+    pub(super) fn root(&self, e: &SoftEnd) -> Element {
+        let [lo, hi] = e.support;
+        let (at, window) = if self.merged {
+            (e.at, e.window)
+        } else {
+            (self.kink.x, self.kink.window)
+        };
+        let (lo, hi) = if e.side > 0.0 {
+            (lo, hi.min(at))
+        } else {
+            (lo.max(at), hi)
+        };
+        Element::new(
+            lo,
+            hi.max(lo),
+            Shape::Root {
+                at,
+                side: e.side,
+                window,
+            },
+        )
+    }
+}
+
+/// What the kinks held at a boundary add to its own root's amplitude there.
+pub(super) fn merged_amplitude(held: &[Held]) -> f64 {
+    held.iter()
+        .filter(|h| h.merged)
+        .map(|h| h.kink.amplitude)
+        .sum()
 }
 
 /// A located solution's cells as the solve models them.
@@ -236,25 +318,19 @@ impl Marcher {
     }
 
     /// The kinks of a located solution on `layout`: the `new` boundaries', and those of its
-    /// `start` (a stretch's, or `None` from the cell level) that its stick zones still hold away
-    /// from them.
+    /// `start` (a stretch's or a turning point's, or `None` from the cell level) that its stick
+    /// zones still hold and that no new boundary `took` over.
     pub(super) fn kept_kinks(
         &self,
         layout: &Layout,
         start: Option<&Model>,
         new: impl Iterator<Item = Kink>,
+        took: impl Fn(&Kink) -> bool,
     ) -> Vec<Kink> {
-        let w = self.width;
         let mut kinks: Vec<Kink> = start.map_or(Vec::new(), |s| {
             s.kinks
                 .iter()
-                .filter(|k| {
-                    layout.zones.iter().any(|z| z[0] < k.x && k.x < z[1])
-                        && !layout
-                            .ends
-                            .iter()
-                            .any(|e| (e.at - k.x).abs() < SAME_KINK * w)
-                })
+                .filter(|k| layout.zones.iter().any(|z| z[0] < k.x && k.x < z[1]) && !took(k))
                 .copied()
                 .collect()
         });
@@ -278,7 +354,7 @@ impl Marcher {
         unknown: &[Special],
         specials: &[f64],
         slopes: &[f64],
-        held: &[f64],
+        held: &[Vec<Held>],
         z: &[f64],
         start: Option<&Model>,
     ) -> Cells {
@@ -339,7 +415,9 @@ impl Marcher {
                 slope: slopes[q],
             };
             add(Element::new(lo, hi, stick), 1.0);
-            add(Self::element_root(e), held[q]);
+            for h in &held[q] {
+                add(h.root(e), h.kink.amplitude);
+            }
             let [lo, hi] = e.slip_part;
             if hi > lo {
                 let [value, s] = self.limit_fit(e.cell, e.sign, lo, hi);

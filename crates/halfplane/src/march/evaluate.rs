@@ -6,7 +6,8 @@
 //! - known parts: on slipping cells the limit `s f p` less the old traction, both as a cell
 //!   mean and a first-moment slope (`moments.rs`); on cells out of contact minus the old traction;
 //!   on the slip part of a boundary cell the limit less the old traction there; minus the
-//!   sub-cell shapes of old boundaries that this layout erases (`boundary.rs`);
+//!   sub-cell shapes of old boundaries that this layout erases (`boundary.rs`), and on each
+//!   boundary element the square roots of the start's kinks it holds (`chain.rs`, `Held`);
 //! - one unknown constant per free stick cell (a run of them sees the Toeplitz kernel);
 //! - per boundary inside a cell, two more unknowns: the constant of its boundary element and the
 //!   amplitude of the square root `sqrt(|x - at|)` over its zone, the shape the traction takes at
@@ -28,7 +29,7 @@
 //! Sign convention as in `marcher.rs`. Owns this solve only. Never moves a boundary and never
 //! changes the marcher's state fields (it writes the increments into work buffers).
 
-use super::chain::Piece;
+use super::chain::{merged_amplitude, Held, Piece, SAME_KINK};
 use super::kernel::{cell_kernels, Element, Shape};
 use super::layout::{Layout, Role};
 use super::marcher::Marcher;
@@ -43,8 +44,12 @@ pub(super) struct EndSolution {
     /// The boundary element's constant increment.
     pub constant: f64,
     /// The amplitude of `sqrt(|x - at|)` in the traction (the increment's, and a located
-    /// start's kink there, `chain.rs`).
+    /// start's kink the boundary took over, `chain.rs`).
     pub amplitude: f64,
+    /// The amplitudes of the start's kinks held at their own places within
+    /// [`super::chain::SAME_KINK`] cells of the boundary: reported with its own (the stresses'
+    /// node form has one node there), not kept with it.
+    pub nearby: f64,
     /// `s q(at-) - f p(at)`: how far the stick side's traction at the boundary exceeds the limit.
     pub jump: f64,
 }
@@ -180,14 +185,14 @@ impl Marcher {
                 });
             }
         }
-        // A located start's exact pieces go where the cell does not stay stuck, and its kink at
-        // a boundary comes back on the element (`chain.rs`).
+        // A located start's exact pieces go where the cell does not stay stuck, and its kinks
+        // inside an element come back on it (`chain.rs`, `Held`).
         let start = self.stretch.as_ref().map(|s| &s.start);
         let pieces: &[Piece] = start.map_or(&[], |m| &m.cells.pieces);
-        let held: Vec<f64> = layout
+        let held: Vec<Vec<Held>> = layout
             .ends
             .iter()
-            .map(|e| start.map_or(0.0, |m| m.kink_at(e.at, e.side, w)))
+            .map(|e| start.map_or(Vec::new(), |m| m.held(e, w)))
             .collect();
         let pieces_resultant: f64 = pieces
             .iter()
@@ -199,11 +204,11 @@ impl Marcher {
                 coefficient: -p.coefficient,
             });
         }
-        for (e, &amplitude) in layout.ends.iter().zip(&held) {
-            if amplitude != 0.0 {
+        for (e, hs) in layout.ends.iter().zip(&held) {
+            for h in hs {
                 known.push(Known {
-                    element: Self::element_root(e),
-                    coefficient: amplitude,
+                    element: h.root(e),
+                    coefficient: h.kink.amplitude,
                 });
             }
         }
@@ -352,7 +357,11 @@ impl Marcher {
             let p = self.pressure_at(e.at)?;
             out.push(EndSolution {
                 constant: specials[2 * j],
-                amplitude: specials[2 * j + 1] + held[j],
+                amplitude: specials[2 * j + 1] + merged_amplitude(&held[j]),
+                nearby: (held[j].iter())
+                    .filter(|h| !h.merged && (h.kink.x - e.at).abs() < SAME_KINK * w)
+                    .map(|h| h.kink.amplitude)
+                    .sum(),
                 jump: e.sign * q - f * p,
             });
         }
@@ -471,7 +480,7 @@ impl Marcher {
         unknown: &[Special],
         specials: &[f64],
         slopes: &[f64],
-        held: &[f64],
+        held: &[Vec<Held>],
         z: &[f64],
     ) {
         let f = self.friction;
@@ -498,11 +507,10 @@ impl Marcher {
                         specials[2 * q]
                             + slopes[q] * (xi - e.at)
                             + roots_at(xi)
-                            + if held[q] == 0.0 {
-                                0.0
-                            } else {
-                                held[q] * Self::element_root(e).value(xi)
-                            }
+                            + held[q]
+                                .iter()
+                                .map(|h| h.kink.amplitude * h.root(e).value(xi))
+                                .sum::<f64>()
                     } else {
                         e.sign * f * self.pressure[i]
                     };
@@ -510,20 +518,6 @@ impl Marcher {
                 }
             };
         }
-    }
-
-    /// The square root of boundary `e` on its element only (unit amplitude).
-    pub(super) fn element_root(e: &super::layout::SoftEnd) -> Element {
-        let [lo, hi] = e.support;
-        Element::new(
-            lo,
-            hi,
-            Shape::Root {
-                at: e.at,
-                side: e.side,
-                window: e.window,
-            },
-        )
     }
 
     /// The slope of the limit `s f p` across boundary `e`'s element (the secant over its

@@ -36,7 +36,7 @@
 
 use super::boundary::View;
 use super::chain::Memory;
-use super::chain::{Cells, Model, Piece};
+use super::chain::{Cells, Kink, Model, Piece, SAME_KINK};
 use super::layout::{Layout, Role};
 use super::marcher::Marcher;
 use crate::error::Result;
@@ -197,8 +197,11 @@ impl Marcher {
         let amplitudes: Vec<f64> = (lay.ends.iter().zip(&self.end_solutions))
             .map(|(e, s)| factor * s.amplitude + reference.kink_at(e.at, e.side, w))
             .collect();
-        let (kinks, new) = self.kinks_of(&lay, &amplitudes)?;
-        let kept = self.kept_kinks(&lay, Some(reference), new);
+        let (kinks, new) = self.kinks_of(&lay, &amplitudes, &amplitudes)?;
+        // The reference's pieces are all kept: a kink of it next to a new boundary is reported,
+        // and kept, with the boundary's.
+        let took = |k: &Kink| (lay.ends.iter()).any(|e| (e.at - k.x).abs() < SAME_KINK * w);
+        let kept = self.kept_kinks(&lay, Some(reference), new, took);
         let (mut mean, mut slope) = (
             add(&reference.cells.mean, &rest.mean),
             add(&reference.cells.slope, &rest.slope),
