@@ -405,6 +405,16 @@ fn located_boundaries_off_mindlins_line() {
         }))
         .chain([[290.0, 10.0], [-290.0, -10.0]])
         .collect();
+    let square: Vec<[f64; 2]> = (0..10)
+        .flat_map(|_| {
+            [
+                [300.0, 100.0],
+                [300.0, -100.0],
+                [-300.0, -100.0],
+                [-300.0, 100.0],
+            ]
+        })
+        .collect();
     println!("\nLocated boundaries off Mindlin's line: largest (median) error over the increments against the located march at 10800 cells, f p0, located / cell level");
     println!("| history | 400 cells | 1200 cells | 3600 cells |");
     println!("|---|---|---|---|");
@@ -418,6 +428,7 @@ fn located_boundaries_off_mindlins_line() {
             10,
         ),
         ("20 nested loops, bulk stress stepped", &nested[..], 4),
+        ("a square in (Q, bulk stress), ten times", &square[..], 6),
     ] {
         let rows = ramps(targets, steps);
         let fine = tractions(&c, &rows, 10800, true);

@@ -32,12 +32,13 @@
 //! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
 //! and slope), exact pieces near each boundary (the element's affine parts, each root within
 //! `NEAR` cells), and the boundaries' kinks with their whole amplitudes. A boundary element
-//! replaces its cells' start; the start's kinks whose stick side it covers go back on it as
-//! square roots ([`Held`], `evaluate.rs`): without them an increment with no change of load
-//! moved the traction next to the boundary by 1.4e-3 f p0. Until 2026-11-27 only a kink within
-//! half a cell went back, moved onto the boundary, and an increment with another kink near the
-//! element was solved from the cell level instead: off Mindlin's line that left up to twice the
-//! cell level's error at 400 cells (docs/convergence.md, "Bulk stress").
+//! replaces its cells' start; the start's kinks with the boundary's stick side go back on it as
+//! square roots ([`Held`], `evaluate.rs`), those inside the new stick zone at their own places:
+//! without them an increment with no change of load moved the traction next to the boundary by
+//! 1.4e-3 f p0. Until 2026-11-27 only the nearest kink within half a cell went back, moved onto
+//! the boundary, and an increment with another kink near the element was solved from the cell
+//! level instead: off Mindlin's line that left up to twice the cell level's error at 400 cells
+//! (docs/convergence.md, "Bulk stress and bent paths").
 //!
 //! The cell-level state itself, and so the active set, the slips, the energy and the cycles'
 //! repetition, never sees any of it. Owns the located solutions' model, the stretch and its
@@ -53,8 +54,17 @@ use crate::load::LoadPoint;
 /// cell that stays stuck through many half-cycles gathers a root piece per half.
 const PIECES_PER_CELL: usize = 8;
 
-/// A kink of the start is put back on an element whose boundary is within this many cells.
+/// A kink of the start beyond a new boundary (on its slip side) within this many cells is taken
+/// over by the boundary ([`Held`]).
 pub(super) const SAME_KINK: f64 = 0.5;
+
+/// A kink of the start on a new boundary's stick side closer than this many cells is taken over
+/// too. Kept apart, kinks gathered where a cycle's boundaries come back (0.01 cells apart on a
+/// square path in the plane of Q and bulk stress), each with pieces of its own, until the
+/// oldest pieces were folded into the cells' means (`PIECES_PER_CELL`): 1.3e-2 f p0 from the
+/// sixth cycle on at 400 cells (against 1200), 3.1e-3 with this (`tests/sub_cell.rs`); at 0.1 cells the
+/// nested loops of `tests/sub_cell.rs` went from 8.5e-3 to 1.6e-2.
+const TAKE_OVER: f64 = 0.02;
 
 /// One exact part of the traction in one cell: `coefficient` times `element`'s shape.
 #[derive(Debug, Clone, PartialEq)]
@@ -95,43 +105,48 @@ pub(super) struct Model {
 }
 
 impl Model {
-    /// The amplitude of the kink nearest a boundary at `at` with stick side `side`, within
-    /// [`SAME_KINK`] cells; zero without one.
-    pub(super) fn kink_at(&self, at: f64, side: f64, width: f64) -> f64 {
-        self.kinks
-            .iter()
+    /// The summed amplitudes of its kinks within [`SAME_KINK`] cells of a boundary at `at` with
+    /// stick side `side`: what the stresses' node form, with one node there, takes as that
+    /// boundary's (zero without one).
+    pub(super) fn kinks_near(&self, at: f64, side: f64, width: f64) -> f64 {
+        (self.kinks.iter())
             .filter(|k| k.side == side && (k.x - at).abs() < SAME_KINK * width)
-            .min_by(|a, b| (a.x - at).abs().total_cmp(&(b.x - at).abs()))
-            .map_or(0.0, |k| k.amplitude)
+            .map(|k| k.amplitude)
+            .sum()
     }
 
-    /// The kinks of this solution that boundary `e`'s element holds ([`Held`]): every kink with
-    /// `e`'s stick side inside the element, at its own place, and the nearest one on the slip
-    /// side within [`SAME_KINK`] cells, taken over by the boundary.
+    /// The kinks of this solution with `e`'s stick side that `e`'s element holds ([`Held`]):
+    /// those inside the element on the stick side, at their own places, and those within
+    /// [`SAME_KINK`] cells on the slip side or [`TAKE_OVER`] on the stick side, taken over by
+    /// the boundary.
     pub(super) fn held(&self, e: &SoftEnd, width: f64) -> Vec<Held> {
         let [lo, hi] = e.support;
         let mut held: Vec<Held> = self
             .kinks
             .iter()
-            .filter(|k| k.side == e.side && e.side * (e.at - k.x) > 0.0 && lo < k.x && k.x < hi)
+            .filter(|k| {
+                k.side == e.side
+                    && e.side * (e.at - k.x) > TAKE_OVER * width
+                    && lo < k.x
+                    && k.x < hi
+            })
             .map(|k| Held {
                 kink: *k,
                 merged: false,
             })
             .collect();
-        let beyond = self
-            .kinks
-            .iter()
-            .filter(|k| {
-                k.side == e.side
-                    && e.side * (e.at - k.x) <= 0.0
-                    && (k.x - e.at).abs() < SAME_KINK * width
-            })
-            .min_by(|a, b| (a.x - e.at).abs().total_cmp(&(b.x - e.at).abs()));
-        held.extend(beyond.map(|k| Held {
-            kink: *k,
-            merged: true,
-        }));
+        held.extend(
+            (self.kinks.iter())
+                .filter(|k| {
+                    k.side == e.side
+                        && e.side * (e.at - k.x) <= TAKE_OVER * width
+                        && (k.x - e.at).abs() < SAME_KINK * width
+                })
+                .map(|k| Held {
+                    kink: *k,
+                    merged: true,
+                }),
+        );
         held
     }
 }
@@ -139,10 +154,13 @@ impl Model {
 /// A start's kink held on a boundary element, which replaces its cells' start (`evaluate.rs`).
 /// Inside the new stick zone it stays where it is: its root is zero between it and the
 /// boundary, so the element's ramp keeps the limit's slope at the boundary. On the slip side,
-/// where the new slip zone reaches it, the boundary takes it over (`merged`): its root goes on
-/// the boundary. Taking over kinks in the stick zone as well moved them by up to [`SAME_KINK`]
-/// cells (an error of order `K sqrt(distance)`), and a kink further inside the element was lost
-/// (`docs/convergence.md`).
+/// where the new slip zone reaches it, or all but on the boundary, the boundary takes it over
+/// (`merged`): its root goes on the boundary. Until 2026-11-27 only the nearest kink within
+/// [`SAME_KINK`] cells on either side went back, moved onto the boundary (an error of order
+/// `K sqrt(distance)`), and an increment with another start kink within three cells was solved
+/// from the cell level instead (`docs/convergence.md`). Kinks with the other stick side are
+/// not held: their roots on the element are lost (a reviewer found two, 0.4 and 0.6 cells
+/// inside, in a history with Q near the limit).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Held {
     pub kink: Kink,
@@ -327,10 +345,16 @@ impl Marcher {
         new: impl Iterator<Item = Kink>,
         took: impl Fn(&Kink) -> bool,
     ) -> Vec<Kink> {
+        // A kink at a zone's end to rounding is the stick zone's (a loop closed at its turning
+        // point puts the new boundary on the old one).
+        let tolerance = 1e-6 * self.width;
         let mut kinks: Vec<Kink> = start.map_or(Vec::new(), |s| {
             s.kinks
                 .iter()
-                .filter(|k| layout.zones.iter().any(|z| z[0] < k.x && k.x < z[1]) && !took(k))
+                .filter(|k| {
+                    let inside = |z: &[f64; 2]| z[0] - tolerance <= k.x && k.x <= z[1] + tolerance;
+                    layout.zones.iter().any(inside) && !took(k)
+                })
                 .copied()
                 .collect()
         });
@@ -342,7 +366,7 @@ impl Marcher {
     /// start's smooth part plus the cell's constant `z` and the roots beyond their near parts by
     /// means and slopes, the start's pieces kept and each root's near part as pieces; on
     /// slipping cells the limit by its mean and slope (as the solve has it); on each boundary's
-    /// cells its element's constant and ramp, the start's kink put back (`held`) and the roots
+    /// cells its element's constant and ramp, the start's kinks put back (`held`) and the roots
     /// on the stick side, and the limit's fit on the slip side, all as pieces; zero out of
     /// contact. `unknown` and `specials` are the solve's shapes and values (per boundary, the
     /// element's constant and the root), `slopes` the elements' ramps, `start` the stretch's

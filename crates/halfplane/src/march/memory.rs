@@ -36,7 +36,7 @@
 
 use super::boundary::View;
 use super::chain::Memory;
-use super::chain::{Cells, Kink, Model, Piece, SAME_KINK};
+use super::chain::{Cells, Model, Piece};
 use super::layout::{Layout, Role};
 use super::marcher::Marcher;
 use crate::error::Result;
@@ -194,14 +194,17 @@ impl Marcher {
         let slip = add(&reference.slip, &self.sub_slip);
         let c_disp = self.compliance / std::f64::consts::PI;
         let displacement = reference.displacement - factor * c_disp * self.shift;
-        let amplitudes: Vec<f64> = (lay.ends.iter().zip(&self.end_solutions))
-            .map(|(e, s)| factor * s.amplitude + reference.kink_at(e.at, e.side, w))
+        // The reference's pieces are all kept, and so are its kinks, each at its own place; a
+        // boundary reports those next to it with its own (the stresses' node form has one node
+        // there).
+        let amplitudes: Vec<f64> = (self.end_solutions.iter())
+            .map(|s| factor * s.amplitude)
             .collect();
-        let (kinks, new) = self.kinks_of(&lay, &amplitudes, &amplitudes)?;
-        // The reference's pieces are all kept: a kink of it next to a new boundary is reported,
-        // and kept, with the boundary's.
-        let took = |k: &Kink| (lay.ends.iter()).any(|e| (e.at - k.x).abs() < SAME_KINK * w);
-        let kept = self.kept_kinks(&lay, Some(reference), new, took);
+        let reported: Vec<f64> = (lay.ends.iter().zip(&amplitudes))
+            .map(|(e, a)| a + reference.kinks_near(e.at, e.side, w))
+            .collect();
+        let (kinks, new) = self.kinks_of(&lay, &reported, &amplitudes)?;
+        let kept = self.kept_kinks(&lay, Some(reference), new, |_| false);
         let (mut mean, mut slope) = (
             add(&reference.cells.mean, &rest.mean),
             add(&reference.cells.slope, &rest.slope),
