@@ -326,25 +326,6 @@ fn lcg(seed: &mut u64) -> f64 {
     (*seed >> 11) as f64 / (1u64 << 53) as f64
 }
 
-/// P pressed to 1000 in ten increments, then each `[Q, bulk stress]` target reached in `steps`
-/// increments, linearly.
-fn ramps(targets: &[[f64; 2]], steps: usize) -> Vec<[f64; 3]> {
-    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
-    let mut from = [0.0, 0.0];
-    for to in targets {
-        rows.extend((1..=steps).map(|i| {
-            let t = i as f64 / steps as f64;
-            [
-                1000.0,
-                from[0] + t * (to[0] - from[0]),
-                from[1] + t * (to[1] - from[1]),
-            ]
-        }));
-        from = *to;
-    }
-    rows
-}
-
 /// The traction after every increment at `cells` cells, with or without located boundaries.
 fn tractions(c: &Contact, rows: &[[f64; 3]], cells: usize, located: bool) -> Vec<Vec<f64>> {
     let options = MarchOptions::default()
@@ -395,26 +376,7 @@ fn located_boundaries_off_mindlins_line() {
         [100.0, 0.0],
         [250.0, -50.0],
     ];
-    let nested: Vec<[f64; 2]> = std::iter::once([280.0, 0.0])
-        .chain((0..20).map(|k| {
-            let a = 280.0 * (1.0 - (k as f64 + 1.0) / 22.0);
-            [
-                if k % 2 == 0 { -a } else { a },
-                30.0 * ((k % 3) as f64 - 1.0),
-            ]
-        }))
-        .chain([[290.0, 10.0], [-290.0, -10.0]])
-        .collect();
-    let square: Vec<[f64; 2]> = (0..10)
-        .flat_map(|_| {
-            [
-                [300.0, 100.0],
-                [300.0, -100.0],
-                [-300.0, -100.0],
-                [-300.0, 100.0],
-            ]
-        })
-        .collect();
+    let (nested, square) = (nested_loops_bulk_stepped(), square_path(10));
     println!("\nLocated boundaries off Mindlin's line: largest (median) error over the increments against the located march at 10800 cells, f p0, located / cell level");
     println!("| history | 400 cells | 1200 cells | 3600 cells |");
     println!("|---|---|---|---|");

@@ -1081,39 +1081,12 @@ fn a_start_kink_inside_a_new_boundary_element_keeps_its_place() {
     // (coinciding centres): measured 8.5e-3 located, 4.7e-2 cell level; with the rule before,
     // 3.4e-2 (its cell level the same, against its own 1200-cell march). Bound 1.5e-2 and a
     // third of the cell level's.
-    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
-    let mut from = [0.0, 0.0];
-    let targets = std::iter::once([280.0, 0.0])
-        .chain((0..20).map(|k| {
-            let a = 280.0 * (1.0 - (k as f64 + 1.0) / 22.0);
-            [
-                if k % 2 == 0 { -a } else { a },
-                30.0 * ((k % 3) as f64 - 1.0),
-            ]
-        }))
-        .chain([[290.0, 10.0], [-290.0, -10.0]]);
-    for to in targets {
-        rows.extend((1..=4).map(|i| {
-            let t = i as f64 / 4.0;
-            [
-                P,
-                from[0] + t * (to[0] - from[0]),
-                from[1] + t * (to[1] - from[1]),
-            ]
-        }));
-        from = to;
-    }
+    let rows = ramps(&nested_loops_bulk_stepped(), 4);
     let fine = run(&rows, 1200).1;
     let f_p0 = F * hertz(fine[fine.len() - 1].0.half_width, 0.0);
     let error = |coarse: &[(StepReport, Kept)]| {
-        coarse
-            .iter()
-            .zip(&fine)
-            .map(|((_, c), (_, f))| {
-                (0..c.traction.len())
-                    .map(|i| (c.traction[i] - f.traction[3 * i + 1]).abs())
-                    .fold(0.0, f64::max)
-            })
+        (coarse.iter().zip(&fine))
+            .map(|((_, c), (_, f))| apart3(c, f))
             .fold(0.0, f64::max)
             / f_p0
     };
@@ -1140,25 +1113,7 @@ fn repeated_cycles_off_mindlins_line_do_not_drift() {
     // the nearest kink alone 7.9e-3 and 2.4e-2; with kinks 0.01 cells inside the stick side kept
     // apart (`TAKE_OVER` zero, `march/chain.rs`) 3.1e-3 and 1.3e-2. Bound: the last three
     // cycles within 1.2 times the second to fourth, and below half the cell level's.
-    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
-    let mut from = [0.0, 0.0];
-    let corners = [
-        [300.0, 100.0],
-        [300.0, -100.0],
-        [-300.0, -100.0],
-        [-300.0, 100.0],
-    ];
-    for to in (0..10).flat_map(|_| corners) {
-        rows.extend((1..=6).map(|i| {
-            let t = i as f64 / 6.0;
-            [
-                P,
-                from[0] + t * (to[0] - from[0]),
-                from[1] + t * (to[1] - from[1]),
-            ]
-        }));
-        from = to;
-    }
+    let rows = ramps(&square_path(10), 6);
     let fine = run(&rows, 1200).1;
     let f_p0 = F * hertz(fine[fine.len() - 1].0.half_width, 0.0);
     // The largest difference over cycles `first..=last` (the first loading to the square's first

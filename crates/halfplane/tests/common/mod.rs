@@ -95,3 +95,52 @@ pub fn flat_rounded_table(b: f64, r: f64) -> Profile {
     );
     Profile::tabulated(x, g, vec![b]).unwrap()
 }
+
+/// P pressed to 1000 N/mm in ten increments, then each `[Q, bulk stress]` target reached in
+/// `steps` increments, linearly: a history at constant P for the located boundaries' studies.
+pub fn ramps(targets: &[[f64; 2]], steps: usize) -> Vec<[f64; 3]> {
+    let mut rows: Vec<[f64; 3]> = (1..=10).map(|i| [100.0 * i as f64, 0.0, 0.0]).collect();
+    let mut from = [0.0, 0.0];
+    for to in targets {
+        rows.extend((1..=steps).map(|i| {
+            let t = i as f64 / steps as f64;
+            [
+                1000.0,
+                from[0] + t * (to[0] - from[0]),
+                from[1] + t * (to[1] - from[1]),
+            ]
+        }));
+        from = *to;
+    }
+    rows
+}
+
+/// Q to 280, then 20 loops of falling amplitude with the bulk stress stepped between -30, 0 and
+/// 30 (off Mindlin's line), then out to +-290: `[Q, bulk stress]` targets for [`ramps`].
+pub fn nested_loops_bulk_stepped() -> Vec<[f64; 2]> {
+    std::iter::once([280.0, 0.0])
+        .chain((0..20).map(|k| {
+            let a = 280.0 * (1.0 - (k as f64 + 1.0) / 22.0);
+            [
+                if k % 2 == 0 { -a } else { a },
+                30.0 * ((k % 3) as f64 - 1.0),
+            ]
+        }))
+        .chain([[290.0, 10.0], [-290.0, -10.0]])
+        .collect()
+}
+
+/// A square in the plane of Q and bulk stress, (300, 100) -> (300, -100) -> (-300, -100) ->
+/// (-300, 100), `cycles` times: `[Q, bulk stress]` targets for [`ramps`].
+pub fn square_path(cycles: usize) -> Vec<[f64; 2]> {
+    (0..cycles)
+        .flat_map(|_| {
+            [
+                [300.0, 100.0],
+                [300.0, -100.0],
+                [-300.0, -100.0],
+                [-300.0, 100.0],
+            ]
+        })
+        .collect()
+}
