@@ -31,7 +31,7 @@
 //!
 //! The start is kept in the form the solve's model has ([`Model`]): per cell a smooth part (mean
 //! and slope), exact pieces near each boundary (the element's affine parts, each root within
-//! `NEAR` cells), and the boundaries' kinks with their whole amplitudes. A boundary element
+//! `NEAR` cells), and the boundaries' kinks with their amplitudes. A boundary element
 //! replaces its cells' start; the start's kinks with the boundary's stick side go back on it as
 //! square roots ([`Held`], `evaluate.rs`), those inside the new stick zone at their own places:
 //! without them an increment with no change of load moved the traction next to the boundary by
@@ -62,8 +62,11 @@ pub(super) const SAME_KINK: f64 = 0.5;
 /// too. Kept apart, kinks gathered where a cycle's boundaries come back (0.01 cells apart on a
 /// square path in the plane of Q and bulk stress), each with pieces of its own, until the
 /// oldest pieces were folded into the cells' means (`PIECES_PER_CELL`): 1.3e-2 f p0 from the
-/// sixth cycle on at 400 cells (against 1200), 3.1e-3 with this (`tests/sub_cell.rs`); at 0.1 cells the
-/// nested loops of `tests/sub_cell.rs` went from 8.5e-3 to 1.6e-2.
+/// sixth cycle on at 400 cells (against 1200), 3.1e-3 through ten cycles with this
+/// (`tests/sub_cell.rs`); at 0.1 cells the nested loops of `tests/sub_cell.rs` went from 8.5e-3
+/// to 1.6e-2, and 0.12 made the square path 3.1e-2 from its second cycle (a reviewer). Beyond
+/// ten cycles a kink held just outside this band, its distance creeping from 0.11 to 0.04
+/// cells, took the square path's error at 400 cells up to 4.4e-2 in cycles 36-40 (docs/convergence.md).
 const TAKE_OVER: f64 = 0.02;
 
 /// One exact part of the traction in one cell: `coefficient` times `element`'s shape.
@@ -74,7 +77,8 @@ pub(super) struct Piece {
     pub coefficient: f64,
 }
 
-/// A stick-slip boundary's square root in a located solution, with its whole amplitude.
+/// A square root in a located solution's traction (a stick-slip boundary's, or one a stick
+/// zone holds), with its amplitude: the roots at one place and side summed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Kink {
     pub x: f64,
@@ -358,7 +362,16 @@ impl Marcher {
                 .copied()
                 .collect()
         });
-        kinks.extend(new);
+        // Kinks at one place with one stick side are one root: summed, so that a cycle whose
+        // half-cycles close on the same turning points does not add an entry per half (a
+        // reviewer counted 4000 after 1000 cycles, and the solves leaving the cycle took up to
+        // 46 times as long).
+        for k in new {
+            match (kinks.iter_mut()).find(|o| o.side == k.side && (o.x - k.x).abs() <= tolerance) {
+                Some(o) => o.amplitude += k.amplitude,
+                None => kinks.push(k),
+            }
+        }
         kinks
     }
 

@@ -43,8 +43,8 @@ use std::f64::consts::PI;
 pub(super) struct EndSolution {
     /// The boundary element's constant increment.
     pub constant: f64,
-    /// The amplitude of `sqrt(|x - at|)` in the traction (the increment's, and a located
-    /// start's kink the boundary took over, `chain.rs`).
+    /// The amplitude of `sqrt(|x - at|)` in the traction (the increment's, and those of the
+    /// located start's kinks the boundary took over, `chain.rs`).
     pub amplitude: f64,
     /// The amplitudes of the start's kinks held at their own places within
     /// [`super::chain::SAME_KINK`] cells of the boundary: reported with its own (the stresses'

@@ -211,9 +211,10 @@ pub struct Fields<'a> {
     pub slip: &'a [f64],
     /// Slip increment of this step.
     pub slip_increment: &'a [f64],
-    /// The square-root kinks of the shear traction, left to right in the order made: the
-    /// stick-slip boundaries of this increment, located inside their cells, and those earlier
-    /// boundaries that a growing stick zone has locked in.
+    /// The square-root kinks of the shear traction at the stick-slip boundaries of this
+    /// increment, located inside their cells, each with the amplitudes of the earlier kinks
+    /// within half a cell of it added. Earlier boundaries' kinks that a stick zone holds further
+    /// away are not reported: the stresses' node form interpolates them between the centres.
     pub kinks: &'a [TractionKink],
 }
 
