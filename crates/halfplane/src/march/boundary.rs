@@ -24,7 +24,7 @@
 //! Owns the boundaries' search and the reported view. Never solves a linear system itself
 //! (`evaluate.rs` does) and never changes the state the next increment starts from.
 
-use super::chain::{Kink, Model};
+use super::chain::{Kink, Model, SAME_KINK};
 use super::layout::{layout, zones_of, End, Layout, Role};
 use super::marcher::{Cell, Marcher};
 use crate::error::Result;
@@ -37,8 +37,8 @@ const MAX_SOLVES: usize = 16;
 /// A jump below this fraction of `f p_max` at the cell-level ends is no boundary to locate.
 const QUIET: f64 = 1e-4;
 
-/// A stick-slip boundary located inside its cell: the shear traction is continuous there and has
-/// a square root on the stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the
+/// A stick-slip boundary located inside its cell, or an earlier one that a stick zone holds: the
+/// shear traction is continuous there and has a square root on the (then) stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the
 /// `root` side, so that the stick zone's traction meets the friction limit with an infinite
 /// slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
 /// its square root exactly over up to four cell intervals on its stick side.
@@ -187,6 +187,7 @@ impl Marcher {
                 ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
             };
             if !lay.ends.is_empty() || from_start {
+                let kinks = self.with_locked_kinks(kinks, &located, &lay)?;
                 self.view = Some(View::of(&located, kinks));
             }
             self.located = Some(located);
@@ -227,6 +228,55 @@ impl Marcher {
             });
         }
         Ok((kinks, new.into_iter()))
+    }
+
+    /// `kinks` (the boundaries') and the kinks of `located` that its stick zones hold further than
+    /// [`SAME_KINK`] cells from a boundary with their stick side (those nearer are reported with
+    /// the boundary's), each with the located traction and the pressure there: as reported, for
+    /// the stresses' node form. Without them, one increment after a reversal of Q = 300 the
+    /// surface `sxx` at the first loading's boundary, held in the stick zone, was 1.7e-2 p0 off
+    /// McEwen's fields at 1600 cells (`tests/sub_cell.rs`).
+    pub(super) fn with_locked_kinks(
+        &self,
+        mut kinks: Vec<TractionKink>,
+        located: &Model,
+        lay: &Layout,
+    ) -> Result<Vec<TractionKink>> {
+        let w = self.width;
+        for k in &located.kinks {
+            let near_a_boundary =
+                (lay.ends.iter()).any(|e| e.side == k.side && (e.at - k.x).abs() < SAME_KINK * w);
+            if near_a_boundary {
+                continue;
+            }
+            kinks.push(TractionKink {
+                x: k.x,
+                root: if k.side > 0.0 {
+                    Edge::Left
+                } else {
+                    Edge::Right
+                },
+                amplitude: k.amplitude,
+                shear: self.smooth_at(&located.centre, k),
+                pressure: self.pressure_at(k.x)?,
+            });
+        }
+        Ok(kinks)
+    }
+
+    /// The traction at kink `k` from the centre values `centre` of the cells either side: their
+    /// values less the kink's root, interpolated linearly (what the node form does between its
+    /// nodes). Evaluating the located model there instead was off wherever its oldest pieces had
+    /// been folded into the cells' means.
+    fn smooth_at(&self, centre: &[f64], k: &Kink) -> f64 {
+        let n = self.x.len();
+        let i = self.x.partition_point(|&x| x <= k.x).clamp(1, n - 1) - 1;
+        let smooth = |j: usize| {
+            let d = k.side * (k.x - self.x[j]);
+            centre[j] - if d > 0.0 { k.amplitude * d.sqrt() } else { 0.0 }
+        };
+        let t = (k.x - self.x[i]) / (self.x[i + 1] - self.x[i]);
+        (1.0 - t) * smooth(i) + t * smooth(i + 1)
     }
 
     /// The located solve of the increment from the stretch's start (over the load change since

@@ -229,6 +229,7 @@ impl Marcher {
             displacement,
             ends: lay.ends.iter().map(|e| [e.at, e.side, e.sign]).collect(),
         };
+        let kinks = self.with_locked_kinks(kinks, &located, &lay)?;
         self.view = Some(View::of(&located, kinks));
         self.located = Some(located);
         Ok(())

@@ -211,10 +211,10 @@ pub struct Fields<'a> {
     pub slip: &'a [f64],
     /// Slip increment of this step.
     pub slip_increment: &'a [f64],
-    /// The square-root kinks of the shear traction at the stick-slip boundaries of this
+    /// The square-root kinks of the shear traction: the stick-slip boundaries of this
     /// increment, located inside their cells, each with the amplitudes of the earlier kinks
-    /// within half a cell of it added. Earlier boundaries' kinks that a stick zone holds further
-    /// away are not reported: the stresses' node form interpolates them between the centres.
+    /// within half a cell of it added, and the earlier boundaries' kinks that its stick zones
+    /// hold further away.
     pub kinks: &'a [TractionKink],
 }
 
