@@ -38,9 +38,9 @@ const MAX_SOLVES: usize = 16;
 const QUIET: f64 = 1e-4;
 
 /// A stick-slip boundary located inside its cell, or an earlier one that a stick zone holds: the
-/// shear traction is continuous there and has a square root on the (then) stick side, `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the
-/// `root` side, so that the stick zone's traction meets the friction limit with an infinite
-/// slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
+/// shear traction is continuous there and has a square root on the (then) stick side,
+/// `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the `root` side, so that the stick
+/// zone's traction met the friction limit with an infinite slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
 /// its square root exactly over up to four cell intervals on its stick side.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TractionKink {

@@ -66,7 +66,8 @@ pub(super) const SAME_KINK: f64 = 0.5;
 /// (`tests/sub_cell.rs`); at 0.1 cells the nested loops of `tests/sub_cell.rs` went from 8.5e-3
 /// to 1.6e-2, and 0.12 made the square path 3.1e-2 from its second cycle (a reviewer). Beyond
 /// ten cycles a kink held just outside this band, its distance creeping from 0.11 to 0.04
-/// cells, took the square path's error at 400 cells up to 4.4e-2 in cycles 36-40 (docs/convergence.md).
+/// cells, took the square path's error at 400 cells up to 4.4e-2 in cycles 36-40
+/// (docs/convergence.md).
 const TAKE_OVER: f64 = 0.02;
 
 /// One exact part of the traction in one cell: `coefficient` times `element`'s shape.
