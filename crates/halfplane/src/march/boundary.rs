@@ -40,8 +40,9 @@ const QUIET: f64 = 1e-4;
 /// A stick-slip boundary located inside its cell, or an earlier one that a stick zone holds: the
 /// shear traction is continuous there and has a square root on the (then) stick side,
 /// `q(x) = shear + amplitude sqrt(|x - x_b|) + (smooth)` on the `root` side, so that the stick
-/// zone's traction met the friction limit with an infinite slope. The node form of [`crate::stress::Traction::from_march_ends`] gives it its own node and
-/// its square root exactly over up to four cell intervals on its stick side.
+/// zone's traction met the friction limit with an infinite slope. The node form of
+/// [`crate::stress::Traction::from_march_ends`] gives it its own node and its square root
+/// exactly over up to four cell intervals on its stick side.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TractionKink {
     /// Where the kink is.
@@ -170,12 +171,14 @@ impl Marcher {
                 .collect();
             let (kinks, new) = self.kinks_of(&lay, &reported, &amplitudes)?;
             let w = self.width;
-            let took = |k: &Kink| {
-                start.is_some_and(|s| {
-                    (lay.ends.iter()).any(|e| s.held(e, w).iter().any(|h| h.merged && h.kink == *k))
-                })
-            };
-            let kept = self.kept_kinks(&lay, start, new, took);
+            let merged: Vec<Kink> = start.map_or(Vec::new(), |s| {
+                (lay.ends.iter())
+                    .flat_map(|e| s.held(e, w))
+                    .filter(|h| h.merged)
+                    .map(|h| h.kink)
+                    .collect()
+            });
+            let kept = self.kept_kinks(&lay, start, new, |k| merged.contains(k));
             let located = Model {
                 centre: traction,
                 cells,
@@ -209,23 +212,15 @@ impl Marcher {
         let mut new = Vec::with_capacity(lay.ends.len());
         for ((e, &amplitude), &whole) in lay.ends.iter().zip(reported).zip(kept) {
             let pressure = self.pressure_at(e.at)?;
-            kinks.push(TractionKink {
-                x: e.at,
-                root: if e.side > 0.0 {
-                    Edge::Left
-                } else {
-                    Edge::Right
-                },
-                amplitude,
-                shear: e.sign * self.friction * pressure,
-                pressure,
-            });
-            new.push(Kink {
+            let kink = Kink {
                 x: e.at,
                 side: e.side,
                 amplitude: whole,
                 window: e.window,
-            });
+            };
+            let shear = e.sign * self.friction * pressure;
+            kinks.push(reported_kink(&kink, amplitude, shear, pressure));
+            new.push(kink);
         }
         Ok((kinks, new.into_iter()))
     }
@@ -249,17 +244,8 @@ impl Marcher {
             if near_a_boundary {
                 continue;
             }
-            kinks.push(TractionKink {
-                x: k.x,
-                root: if k.side > 0.0 {
-                    Edge::Left
-                } else {
-                    Edge::Right
-                },
-                amplitude: k.amplitude,
-                shear: self.smooth_at(&located.centre, k),
-                pressure: self.pressure_at(k.x)?,
-            });
+            let (shear, pressure) = (self.smooth_at(&located.centre, k), self.pressure_at(k.x)?);
+            kinks.push(reported_kink(k, k.amplitude, shear, pressure));
         }
         Ok(kinks)
     }
@@ -561,5 +547,21 @@ impl Layout {
             ends: Vec::new(),
             zones,
         }
+    }
+}
+
+/// Kink `k` as reported, with the square root's `amplitude` there and the `shear` and
+/// `pressure` at it.
+fn reported_kink(k: &Kink, amplitude: f64, shear: f64, pressure: f64) -> TractionKink {
+    TractionKink {
+        x: k.x,
+        root: if k.side > 0.0 {
+            Edge::Left
+        } else {
+            Edge::Right
+        },
+        amplitude,
+        shear,
+        pressure,
     }
 }
