@@ -58,3 +58,32 @@ fn cattaneo_sub_cell(b: divan::Bencher, cells: usize) {
         .unwrap();
     b.bench(|| run_with(&history, options));
 }
+
+/// The FFT work under one sub-step of the cycle at 6400 cells (BENCHMARKS.md, "The floor under
+/// the cycle's rules"): a forward and an inverse real FFT of length m. A stick-run solve
+/// (Gohberg-Semencul) makes three such pairs at `m = 10800` (the FFT length for the mean stick
+/// run of 5318 cells, at least twice its order with no prime factor beyond 5) and a kernel
+/// product one pair at `m = 12800` (the grid's circulant embedding).
+#[divan::bench(args = [10800, 12800])]
+fn fft_pair(b: divan::Bencher, m: usize) {
+    let mut planner = realfft::RealFftPlanner::<f64>::new();
+    let (forward, inverse) = (planner.plan_fft_forward(m), planner.plan_fft_inverse(m));
+    let mut real: Vec<f64> = (0..m).map(|k| (k as f64 * 0.37).sin()).collect();
+    let mut spectrum = forward.make_output_vec();
+    let mut scratch = forward.make_scratch_vec();
+    scratch.resize(
+        scratch.len().max(inverse.get_scratch_len()),
+        Default::default(),
+    );
+    b.bench_local(|| {
+        forward
+            .process_with_scratch(&mut real, &mut spectrum, &mut scratch)
+            .unwrap();
+        spectrum[0].im = 0.0;
+        spectrum[m / 2].im = 0.0;
+        inverse
+            .process_with_scratch(&mut spectrum, &mut real, &mut scratch)
+            .unwrap();
+        real.iter_mut().for_each(|v| *v /= m as f64);
+    });
+}

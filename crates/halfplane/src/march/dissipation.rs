@@ -44,7 +44,7 @@
 //! Owns the energy quadrature only. Never changes the active set or the state fields.
 
 use super::marcher::{Cell, Marcher};
-use super::solve::{apply, Rhs};
+use super::solve::{add_column, apply, sum, Rhs};
 use crate::error::Result;
 use crate::labels::PerEdge;
 use std::f64::consts::PI;
@@ -144,11 +144,8 @@ impl Marcher {
     fn curvature_correction(&mut self, differ: &[(usize, f64)], step: usize) -> Result<f64> {
         const MAX_COLUMNS: usize = 64;
         if differ.len() <= MAX_COLUMNS {
-            let row = self.kernel.row();
             for &(k, d) in differ {
-                for (i, g) in self.g_known.iter_mut().enumerate() {
-                    *g += d * row[i.abs_diff(k)];
-                }
+                add_column(&mut self.g_known, self.kernel.row(), k, d);
             }
         } else {
             apply(
@@ -169,13 +166,13 @@ impl Marcher {
         }
         self.solve_stick(&Rhs::Vector, step)?;
         self.solve_stick(&Rhs::Ones, step)?;
-        let sv: f64 = self.v.iter().sum();
+        let sv = sum(&self.v);
         if sv == 0.0 {
             return Ok(0.0);
         }
         // Zero resultant change: sum(R) + sum(u - c v) = 0.
-        let target = -self.known.iter().sum::<f64>();
-        let c = (self.u.iter().sum::<f64>() - target) / sv;
+        let target = -sum(&self.known);
+        let c = (sum(&self.u) - target) / sv;
         for i in 0..n {
             self.rhs[i] = self.known[i]
                 + if self.cells[i] == Cell::Stick {

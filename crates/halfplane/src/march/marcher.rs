@@ -13,7 +13,7 @@ use super::kernel;
 use super::layout::Layout;
 use super::moments::PressureShape;
 use super::predict::{restick_reversed, StickEnds};
-use super::solve::{apply, Rhs, SchurCache};
+use super::solve::{apply, sum, Rhs, SchurCache};
 use super::toeplitz::Toeplitz;
 use super::types::{Fields, LinearSolver, MarchOptions, RelativeDisplacement, StepReport};
 use super::worn::Worn;
@@ -421,7 +421,7 @@ impl Marcher {
         // rounding. Cells can sit exactly at the limit without slipping; with a relative test,
         // rounding pushed such cells over one at a time (190 passes where 5 do).
         let traction_tolerance = 1e-9 * f * self.pressure.iter().fold(0.0f64, |m, p| m.max(*p));
-        let q_old_sum: f64 = self.traction.iter().sum();
+        let q_old_sum = sum(&self.traction);
         let mut passes = 0;
         let mut shift;
         let (mut restarts, mut forced) = (0, None);
@@ -436,6 +436,8 @@ impl Marcher {
             (0.5 * (e.left + e.right) - (self.x[0] - 0.5 * self.width)) / self.width
         };
         let mut ends = StickEnds::new(pressure_unchanged, centre);
+        // The single stick run the last pass solved on (`solve_after_cut`).
+        let mut run = None;
         loop {
             passes += 1;
             if passes > self.options.max_passes() {
@@ -470,20 +472,7 @@ impl Marcher {
                     forced = Some(i);
                 }
             }
-            // Known traction increments: slip cells at the friction limit, released cells to zero.
-            for i in 0..n {
-                self.known[i] = match self.cells[i] {
-                    Cell::Out => -self.traction[i],
-                    Cell::Slip(sign) => sign * f * self.pressure[i] - self.traction[i],
-                    Cell::Stick => 0.0,
-                };
-            }
-            apply(
-                &mut self.kernel,
-                &self.dense,
-                &self.known,
-                &mut self.g_known,
-            );
+            let changed = self.known_increments(passes == 1);
             for i in 0..n {
                 self.rhs[i] = if self.cells[i] == Cell::Stick {
                     -self.g_known[i] - 0.25 * PI * d_sigma * self.x[i]
@@ -491,10 +480,18 @@ impl Marcher {
                     0.0
                 };
             }
-            let target = load.shear() / self.width - q_old_sum - self.known.iter().sum::<f64>();
-            self.solve_stick(&Rhs::Vector, step)?;
+            let target = load.shear() / self.width - q_old_sum - sum(&self.known);
+            // After the first pass, a run that only lost cells at its ends is cut, not solved.
+            run = match (run, changed) {
+                (Some(from), Some(changed)) => self.solve_after_cut(from, &changed),
+                _ => None,
+            };
+            if run.is_none() {
+                self.solve_stick(&Rhs::Vector, step)?;
+                run = self.single_run();
+            }
             self.solve_stick(&Rhs::Ones, step)?;
-            let (su, sv) = (self.u.iter().sum::<f64>(), self.v.iter().sum::<f64>());
+            let (su, sv) = (sum(&self.u), sum(&self.v));
             let c = (su - target) / sv;
             shift = c;
             for i in 0..n {

@@ -21,7 +21,9 @@
 //! inverse of each contiguous stick run (Gohberg-Semencul, O(n log n); its generator comes from
 //! a cached run length by Levinson steps or, far from every cached length, by conjugate gradients
 //! with a circulant preconditioner, so no step is O(n^2)), with preconditioned conjugate
-//! gradients coupling several runs.
+//! gradients coupling several runs. A pass whose single run only lost cells at its ends (the
+//! stick-slip boundary moving in by a cell or two) takes the last pass's solution cut to the
+//! shorter run, O(n) per cell, instead of a new solve (`solve.rs`, `Toeplitz::cut`).
 //!
 //! Moving edges: each increment is split internally at the loads (linear within the increment)
 //! where the contact half-width a(P) passes a cell centre. A cell joins the contact at that

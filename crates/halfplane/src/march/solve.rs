@@ -28,7 +28,98 @@ pub(super) enum Rhs {
     Ones,
 }
 
+/// Cells whose known increment changed since the last pass, at most, for `G known` to be
+/// updated by their kernel columns (`k N` operations) rather than by a full FFT product.
+/// Measured: see `known_increments`.
+const CHANGED_COLUMNS: usize = 16;
+
 impl Marcher {
+    /// The known traction increments of the current cells into `known` (slip cells to the
+    /// friction limit, `f p sign - q`; released cells to zero, `-q`; stick cells none) and
+    /// `G known` into `g_known`. Within a sub-step the tractions and pressures do not change,
+    /// so after its first pass only the cells that changed state have new values; when at most
+    /// [`CHANGED_COLUMNS`] did, `g_known` gets their kernel columns (`G` is Toeplitz:
+    /// `G_ik = row[|i - k|]`) instead of a full product, and those changes `(cell, change)` are
+    /// returned (for [`Self::solve_after_cut`]). The two routes agree to rounding.
+    pub(super) fn known_increments(&mut self, first_pass: bool) -> Option<Vec<(usize, f64)>> {
+        let f = self.friction;
+        let mut changed = Vec::new();
+        for i in 0..self.x.len() {
+            let known = match self.cells[i] {
+                Cell::Out => -self.traction[i],
+                Cell::Slip(sign) => sign * f * self.pressure[i] - self.traction[i],
+                Cell::Stick => 0.0,
+            };
+            if !first_pass && known != self.known[i] && changed.len() <= CHANGED_COLUMNS {
+                changed.push((i, known - self.known[i]));
+            }
+            self.known[i] = known;
+        }
+        if first_pass || changed.len() > CHANGED_COLUMNS {
+            apply(
+                &mut self.kernel,
+                &self.dense,
+                &self.known,
+                &mut self.g_known,
+            );
+            return None;
+        }
+        for &(k, d) in &changed {
+            add_column(&mut self.g_known, self.kernel.row(), k, d);
+        }
+        Some(changed)
+    }
+
+    /// The stick solution `u` of a pass whose stick set is the last pass's single run `from`
+    /// less a few cells at its ends, which `changed` (from [`Self::known_increments`]) flagged to
+    /// slip, without a fresh solve: returns the new run, or `None` (nothing done) when the pass
+    /// is not of that kind.
+    ///
+    /// The last pass solved `T_S u = b` on its run S. This pass's right-hand side on the
+    /// shorter run S' is `b - sum_f d_f G e_f` (the flagged cells' known increments `d_f`, as in
+    /// `g_known`), and `G e_f` on S is `T_S e_f` because f was in S; so `u - sum_f d_f e_f`
+    /// solves S's system with this pass's right-hand side on S', and cutting it to S'
+    /// (`Toeplitz::cut`, O(n) per cell) gives the solution there, exact up to rounding.
+    pub(super) fn solve_after_cut(
+        &mut self,
+        from: (usize, usize),
+        changed: &[(usize, f64)],
+    ) -> Option<(usize, usize)> {
+        const CUT_MAX: usize = 8;
+        let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
+        let [(s, e)] = runs_of(&set)[..] else {
+            return None;
+        };
+        let cut = |i: usize| (from.0..s).contains(&i) || (e..from.1).contains(&i);
+        if self.dense.is_some()
+            || s < from.0
+            || e > from.1
+            || s >= e
+            || (s - from.0) + (from.1 - e) > CUT_MAX
+            || !changed.iter().all(|&(i, _)| cut(i))
+        {
+            return None;
+        }
+        for &(i, d) in changed {
+            self.u[i] -= d;
+        }
+        let mut z = self.u[from.0..from.1].to_vec();
+        self.kernel.cut(from, (s, e), &mut z);
+        self.u.fill(0.0);
+        self.u[s..e].copy_from_slice(&z);
+        Some((s, e))
+    }
+
+    /// The single stick run of the current cells, `None` when there are several or none, or
+    /// with the dense solver (for [`Self::solve_after_cut`]).
+    pub(super) fn single_run(&self) -> Option<(usize, usize)> {
+        let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
+        match runs_of(&set)[..] {
+            [run] if self.dense.is_none() => Some(run),
+            _ => None,
+        }
+    }
+
     /// Solves `G_SS z = b` on the stick cells S, into `u` (b = rhs) or `v` (b = 1).
     pub(super) fn solve_stick(&mut self, which: &Rhs, step: usize) -> Result<()> {
         let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
@@ -174,7 +265,12 @@ impl Marcher {
         let (s0, e0, k) = (cache.start, cache.end, cache.extra.len());
         let nb = e0 - s0;
         let mut y = vec![0.0; nb];
-        self.kernel.solve(&b[s0..e0], &mut y);
+        if b[s0..e0].iter().all(|v| *v == 1.0) {
+            // The unit solve (`solve_ones`): bordered from the last order, as for a single run.
+            self.kernel.solve_ones(&mut y);
+        } else {
+            self.kernel.solve(&b[s0..e0], &mut y);
+        }
         let row = self.kernel.row();
         let mut r: Vec<f64> = cache
             .extra
@@ -256,6 +352,33 @@ impl Marcher {
             iterations: 500,
         })
     }
+}
+
+/// `g += d G e_k`: column k of the Toeplitz matrix with first row `row` (`G_ik = row[|i - k|]`),
+/// scaled by d, in two contiguous runs (the rows above k read the row backwards).
+pub(super) fn add_column(g: &mut [f64], row: &[f64], k: usize, d: f64) {
+    let (above, below) = g.split_at_mut(k);
+    for (gi, r) in above.iter_mut().zip(row[1..=k].iter().rev()) {
+        *gi += d * r;
+    }
+    for (gi, r) in below.iter_mut().zip(row) {
+        *gi += d * r;
+    }
+}
+
+/// The sum of `v` with four running partial sums, which the processor adds side by side (a
+/// single running sum waits on each addition in turn). It differs from the sequential sum by
+/// rounding only.
+pub(super) fn sum(v: &[f64]) -> f64 {
+    let chunks = v.chunks_exact(4);
+    let rest: f64 = chunks.remainder().iter().sum();
+    let mut partial = [0.0; 4];
+    for c in chunks {
+        for (p, x) in partial.iter_mut().zip(c) {
+            *p += x;
+        }
+    }
+    (partial[0] + partial[1]) + (partial[2] + partial[3]) + rest
 }
 
 /// `y = G v`, by FFT or by the dense matrix.
