@@ -561,7 +561,7 @@ impl Marcher {
         // the bodies' rigid relative displacement moves by `-c_disp c`.
         self.displacement -= c_disp * shift;
         self.shift = shift;
-        let energy = self.dissipation(ends_start, target.ends(), step)?;
+        let energy = self.dissipation(ends_start, target.ends(), d_sigma, step)?;
         let unchanged = self.normal_unchanged(&load);
         if last && self.locates() && unchanged {
             passes += self.view(load, &target, d_sigma, step)?;

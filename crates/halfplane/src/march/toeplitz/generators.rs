@@ -80,8 +80,7 @@ impl Toeplitz {
     /// cutting the first `(z'_0 / x_0) x`, whatever beta was.
     pub fn cut(&mut self, from: (usize, usize), to: (usize, usize), z: &mut Vec<f64>) {
         let (mut s, mut e) = from;
-        let g = self.generator(e - s);
-        let mut x = self.cache[g].x.clone();
+        let mut x = self.generator_near(e - s);
         while s < to.0 {
             let c = z[0] / x[0];
             z.remove(0);
@@ -98,6 +97,72 @@ impl Toeplitz {
             step_down(&mut x);
             e -= 1;
         }
+    }
+
+    /// `z = T_n^{-1} r` for the ramp `r = (0, 1, .., n - 1)`, n = z.len() (a stick run's
+    /// `T^{-1} x` is `x_s T^{-1} 1 + w T^{-1} r`), bordered from the last order as
+    /// [`Self::solve_ones`] is, with the general rule: x the generator of order k + 1, a cell
+    /// added after the run gives `[z; 0] + (k - t.z) J x` (`t_i = t_{k-i}`, the new row; the
+    /// ramp's new entry is k), and a cell cut subtracts `(z_k / x_0) J x`.
+    pub fn solve_ramp(&mut self, z: &mut [f64]) {
+        let n = z.len();
+        let m = self.ramp.len();
+        let steps = m.abs_diff(n);
+        if m >= DIRECT_BELOW && steps <= ONES_STEPS_MAX && self.ramp_steps + steps <= ONES_REFRESH {
+            if steps > 0 {
+                let mut x = self.generator_near(m);
+                let (row, v) = (&self.row, &mut self.ramp);
+                while v.len() < n {
+                    step_up(&mut x, row);
+                    let k = v.len();
+                    let t_dot_z: f64 = v.iter().enumerate().map(|(i, vi)| row[k - i] * vi).sum();
+                    let a = k as f64 - t_dot_z;
+                    v.push(0.0);
+                    v.iter_mut()
+                        .zip(x.iter().rev())
+                        .for_each(|(vi, xi)| *vi += a * xi);
+                }
+                while v.len() > n {
+                    let c = v[v.len() - 1] / x[0];
+                    v.pop();
+                    v.iter_mut()
+                        .zip(x.iter().rev())
+                        .for_each(|(vi, xi)| *vi -= c * xi);
+                    step_down(&mut x);
+                }
+                self.ramp_steps += steps;
+            }
+        } else {
+            let ramp: Vec<f64> = (0..n).map(|i| i as f64).collect();
+            let mut v = vec![0.0; n];
+            self.solve(&ramp, &mut v);
+            self.ramp = v;
+            self.ramp_steps = 0;
+        }
+        z.copy_from_slice(&self.ramp);
+    }
+
+    /// The generator of order n, stepped from the nearest cached one when that is at most
+    /// [`LEVINSON_STEPS_MAX`] orders away (not cached itself, nor its spectra: a cut or a
+    /// bordering needs x alone), else the cache's own.
+    fn generator_near(&mut self, n: usize) -> Vec<f64> {
+        let near = self
+            .cache
+            .iter()
+            .filter(|g| g.n.abs_diff(n) <= LEVINSON_STEPS_MAX)
+            .min_by_key(|g| g.n.abs_diff(n));
+        let Some(g) = near else {
+            let g = self.generator(n);
+            return self.cache[g].x.clone();
+        };
+        let mut x = g.x.clone();
+        while x.len() < n {
+            step_up(&mut x, &self.row);
+        }
+        while x.len() > n {
+            step_down(&mut x);
+        }
+        x
     }
 
     /// Index in the cache of the generator of order n: from the nearest cached one by Levinson

@@ -132,6 +132,10 @@ pub(crate) struct Toeplitz {
     ones: Vec<f64>,
     /// Bordering steps taken since `ones` was last solved.
     ones_steps: usize,
+    /// `T_m^{-1} (0, 1, .., m - 1)` for the last order m asked of [`Toeplitz::solve_ramp`], and
+    /// its bordering steps.
+    ramp: Vec<f64>,
+    ramp_steps: usize,
 }
 
 impl Toeplitz {
@@ -177,6 +181,8 @@ impl Toeplitz {
             buf2: vec![0.0; m],
             ones: Vec::new(),
             ones_steps: 0,
+            ramp: Vec::new(),
+            ramp_steps: 0,
         })
     }
 
@@ -357,6 +363,36 @@ pub(super) mod tests {
             let e: f64 = (0..37).map(|j| row[i.abs_diff(j)] * v[j]).sum();
             assert!((y[i] - e).abs() < 1e-12 * e.abs().max(1.0), "{i}");
         }
+    }
+
+    #[test]
+    fn bordered_ramp_solves_match_fresh_ones() {
+        // T_n^{-1} (0, 1, .., n - 1) carried by the general bordering rule along the same walk
+        // as the unit solves below; the same tolerance, for the same reason.
+        let row = log_row(3000);
+        let mut t = Toeplitz::new(row.clone()).unwrap();
+        let mut fresh = Toeplitz::new(row).unwrap();
+        let mut n = 1500usize;
+        let mut worst = 0.0f64;
+        for k in 0..300 {
+            let step = 1 + (k * 7) % 32;
+            n = if (k / 5) % 2 == 0 { n + step } else { n - step };
+            let mut carried = vec![0.0; n];
+            t.solve_ramp(&mut carried);
+            let ramp: Vec<f64> = (0..n).map(|i| i as f64).collect();
+            let mut direct = vec![0.0; n];
+            fresh.solve(&ramp, &mut direct);
+            let scale = direct.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            for (a, b) in carried.iter().zip(&direct) {
+                worst = worst.max((a - b).abs() / scale);
+            }
+        }
+        eprintln!("bordered T^-1 ramp: largest difference {worst:.2e} of the largest entry");
+        assert!(
+            worst < 1e-10,
+            "bordered T^-1 ramp off by {worst:e} of its largest entry"
+        );
+        assert!(t.ramp_steps > 0, "the walk's last vector was bordered");
     }
 
     #[test]
