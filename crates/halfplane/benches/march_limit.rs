@@ -4,7 +4,8 @@
 //! Run: `cargo bench -p halfplane --bench march_limit`; active-set passes per case:
 //! `target/release/examples/profile_march CELLS [cattaneo]`. `cattaneo_sub_cell` is the same load
 //! with the stick-slip boundaries located inside their cells
-//! (`MarchOptions::with_sub_cell_boundaries`).
+//! (`MarchOptions::with_sub_cell_boundaries`). `fft_pair` times the FFT work under one sub-step
+//! of the cycle at 6400 cells, for the floor in BENCHMARKS.md.
 
 use divan::black_box;
 use halfplane::history::{History, Ramp};
