@@ -32,7 +32,8 @@
 //!   its onset just before the end, so the divisor is kept at least 1/16: the weight stays
 //!   bounded, and the studies' errors moved by at most 3% against an unbounded divisor (1/2 cost
 //!   up to 25% at 5 steps per half; no divisor left an error floor of 5e-8 at 800 cells).
-//!   `Gamma R` costs one more stick solve per sub-step in which cells slip.
+//!   `Gamma R` costs one more stick solve per sub-step in which cells slip, unless the stick
+//!   set is one run: then the last pass's solution gives it (`curvature_by_columns`).
 //!
 //! The curvature term is the energy `integral q ds` with `s = s_lin + Gamma r` integrated by
 //! parts (`r` vanishes at the ends of the slipping interval); the term quadratic in `r` drops

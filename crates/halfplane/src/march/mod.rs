@@ -32,7 +32,7 @@
 //! a sub-step does not depend on the path inside it; the energy dissipated, `integral f p |ds|`
 //! over the slipping cells, does, and `dissipation.rs` integrates it to second order in the
 //! step (onset times, start-set slip rates, and the curvature of the slipping tractions, which
-//! costs one more stick solve); it is never negative.
+//! costs one more stick solve unless the stick set is one run); it is never negative.
 //!
 //! Stick-slip boundaries inside cells (optional, `MarchOptions::with_sub_cell_boundaries`): the
 //! cell-level active set puts every zone end at a cell edge, so the traction error near a
