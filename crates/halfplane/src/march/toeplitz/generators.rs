@@ -6,7 +6,7 @@
 //! Owns how a generator of a new order is made and the unit solve. Never applies the inverse
 //! (`mod.rs` does).
 
-use super::{fft_size, Fft, Generator, Toeplitz, CACHE, CG_FROM, DIRECT_BELOW};
+use super::{fft_size, Bordered, Family, Fft, Generator, Toeplitz, CACHE, CG_FROM, DIRECT_BELOW};
 use realfft::num_complex::Complex;
 
 /// A cached generator is stepped to a new order by Levinson steps (O(n) each) only when it is
@@ -33,40 +33,83 @@ impl Toeplitz {
     /// bordered matrix gives `T_{k+1}^{-1} 1 = [T_k^{-1} 1; 0] + (sum(x)/x_0) c`: its last entry
     /// is the last column's sum, as it must be. Going down inverts the same relation.
     pub fn solve_ones(&mut self, z: &mut [f64]) {
+        self.solve_bordered(Family::Ones, z);
+    }
+
+    /// `z = T_n^{-1} r` for the ramp `r = (0, 1, .., n - 1)`, n = z.len() (a stick run's
+    /// `T^{-1} x` is `x_s T^{-1} 1 + w T^{-1} r`), bordered from the last order as
+    /// [`Self::solve_ones`] is, with the general rule: x the generator of order k + 1, a cell
+    /// added after the run gives `[z; 0] + (k - t.z) J x` (`t_i = t_{k-i}`, the new row; the
+    /// ramp's new entry is k), and a cell cut subtracts `(z_k / x_0) J x`.
+    pub fn solve_ramp(&mut self, z: &mut [f64]) {
+        self.solve_bordered(Family::Ramp, z);
+    }
+
+    /// [`Self::solve_ones`] and [`Self::solve_ramp`]: the family's last vector bordered to order
+    /// n = z.len(), or solved afresh.
+    fn solve_bordered(&mut self, family: Family, z: &mut [f64]) {
         let n = z.len();
-        let m = self.ones.len();
+        let (m, taken) = {
+            let b = self.bordered(family);
+            (b.v.len(), b.steps)
+        };
         let steps = m.abs_diff(n);
-        if m >= DIRECT_BELOW && steps <= ONES_STEPS_MAX && self.ones_steps + steps <= ONES_REFRESH {
+        if m >= DIRECT_BELOW && steps <= ONES_STEPS_MAX && taken + steps <= ONES_REFRESH {
             if steps > 0 {
                 let g = self.generator(m);
                 let mut x = self.cache[g].x.clone();
-                let v = &mut self.ones;
-                while v.len() < n {
-                    step_up(&mut x, &self.row);
-                    let (k, f) = (x.len(), x.iter().sum::<f64>() / x[0]);
-                    v.push(0.0);
-                    for (i, vi) in v.iter_mut().enumerate() {
-                        *vi += f * x[k - 1 - i];
-                    }
+                let row = std::mem::take(&mut self.row);
+                let b = self.bordered(family);
+                while b.v.len() < n {
+                    step_up(&mut x, &row);
+                    let k = b.v.len();
+                    let a = match family {
+                        Family::Ones => x.iter().sum::<f64>() / x[0],
+                        Family::Ramp => {
+                            k as f64
+                                - b.v
+                                    .iter()
+                                    .enumerate()
+                                    .map(|(i, v)| row[k - i] * v)
+                                    .sum::<f64>()
+                        }
+                    };
+                    b.v.push(0.0);
+                    b.v.iter_mut()
+                        .zip(x.iter().rev())
+                        .for_each(|(v, xi)| *v += a * xi);
                 }
-                while v.len() > n {
-                    let (k, f) = (x.len(), x.iter().sum::<f64>() / x[0]);
-                    v.pop();
-                    for (i, vi) in v.iter_mut().enumerate() {
-                        *vi -= f * x[k - 1 - i];
-                    }
+                while b.v.len() > n {
+                    let c = match family {
+                        Family::Ones => x.iter().sum::<f64>() / x[0],
+                        Family::Ramp => b.v[b.v.len() - 1] / x[0],
+                    };
+                    b.v.pop();
+                    b.v.iter_mut()
+                        .zip(x.iter().rev())
+                        .for_each(|(v, xi)| *v -= c * xi);
                     step_down(&mut x);
                 }
-                self.ones_steps += steps;
+                b.steps += steps;
+                self.row = row;
             }
         } else {
-            let ones = vec![1.0; n];
+            let rhs: Vec<f64> = match family {
+                Family::Ones => vec![1.0; n],
+                Family::Ramp => (0..n).map(|i| i as f64).collect(),
+            };
             let mut v = vec![0.0; n];
-            self.solve(&ones, &mut v);
-            self.ones = v;
-            self.ones_steps = 0;
+            self.solve(&rhs, &mut v);
+            *self.bordered(family) = Bordered { v, steps: 0 };
         }
-        z.copy_from_slice(&self.ones);
+        z.copy_from_slice(&self.bordered(family).v);
+    }
+
+    fn bordered(&mut self, family: Family) -> &mut Bordered {
+        match family {
+            Family::Ones => &mut self.ones,
+            Family::Ramp => &mut self.ramp,
+        }
     }
 
     /// `z = T_k^{-1} b` on the run `[from.0, from.1)` (k its length) carried to the shorter run
@@ -97,49 +140,6 @@ impl Toeplitz {
             step_down(&mut x);
             e -= 1;
         }
-    }
-
-    /// `z = T_n^{-1} r` for the ramp `r = (0, 1, .., n - 1)`, n = z.len() (a stick run's
-    /// `T^{-1} x` is `x_s T^{-1} 1 + w T^{-1} r`), bordered from the last order as
-    /// [`Self::solve_ones`] is, with the general rule: x the generator of order k + 1, a cell
-    /// added after the run gives `[z; 0] + (k - t.z) J x` (`t_i = t_{k-i}`, the new row; the
-    /// ramp's new entry is k), and a cell cut subtracts `(z_k / x_0) J x`.
-    pub fn solve_ramp(&mut self, z: &mut [f64]) {
-        let n = z.len();
-        let m = self.ramp.len();
-        let steps = m.abs_diff(n);
-        if m >= DIRECT_BELOW && steps <= ONES_STEPS_MAX && self.ramp_steps + steps <= ONES_REFRESH {
-            if steps > 0 {
-                let mut x = self.generator_near(m);
-                let (row, v) = (&self.row, &mut self.ramp);
-                while v.len() < n {
-                    step_up(&mut x, row);
-                    let k = v.len();
-                    let t_dot_z: f64 = v.iter().enumerate().map(|(i, vi)| row[k - i] * vi).sum();
-                    let a = k as f64 - t_dot_z;
-                    v.push(0.0);
-                    v.iter_mut()
-                        .zip(x.iter().rev())
-                        .for_each(|(vi, xi)| *vi += a * xi);
-                }
-                while v.len() > n {
-                    let c = v[v.len() - 1] / x[0];
-                    v.pop();
-                    v.iter_mut()
-                        .zip(x.iter().rev())
-                        .for_each(|(vi, xi)| *vi -= c * xi);
-                    step_down(&mut x);
-                }
-                self.ramp_steps += steps;
-            }
-        } else {
-            let ramp: Vec<f64> = (0..n).map(|i| i as f64).collect();
-            let mut v = vec![0.0; n];
-            self.solve(&ramp, &mut v);
-            self.ramp = v;
-            self.ramp_steps = 0;
-        }
-        z.copy_from_slice(&self.ramp);
     }
 
     /// The generator of order n, stepped from the nearest cached one when that is at most
