@@ -217,9 +217,10 @@ impl Marcher {
     /// `w = T_S^{-1} (G c)_S`, and `sum(u_R) = -v . (G R)_S` (`v = T_S^{-1} 1`). w needs no solve:
     /// the last pass solved `T_S u = b` with `b = -(G known)_S - (pi/4) dsigma x_S`, so
     /// `T_S^{-1} (G known)_S = -u - (pi/4) dsigma (x_s v + width T_S^{-1} r)` (r the ramp
-    /// `0, 1, ..`, bordered like v: `Toeplitz::solve_ramp`), and each differing cell k adds
-    /// `d_k T_S^{-1} (G e_k)_S`, which is `e_k` on the run extended to k, cut back to S
-    /// (`Toeplitz::cut`, O(n) per cell). Equal to the solved route up to rounding.
+    /// `0, 1, ..`, bordered like v: `Toeplitz::solve_ramp`; not needed when dsigma = 0), and
+    /// each differing cell k adds `d_k T_S^{-1} (G e_k)_S`, which is `e_k` on any run holding k
+    /// cut back to S: their sum is one vector on the run spanning them all, cut once
+    /// (`Toeplitz::cut`, O(n) per cell cut). Equal to the solved route up to rounding.
     fn curvature_by_columns(&mut self, differ: &[(usize, f64)], d_sigma: f64) -> Option<f64> {
         const NEAR: usize = 16;
         let (s, e) = self.single_run()?;
@@ -231,23 +232,30 @@ impl Marcher {
         if sv == 0.0 {
             return Some(0.0);
         }
-        let mut ramp = vec![0.0; e - s];
-        self.kernel.solve_ramp(&mut ramp);
         let a = 0.25 * PI * d_sigma;
         let mut w: Vec<f64> = (s..e)
-            .zip(&ramp)
-            .map(|(i, r)| -self.u[i] - a * (self.x[s] * self.v[i] + self.width * r))
+            .map(|i| -self.u[i] - a * self.x[s] * self.v[i])
             .collect();
-        for &(k, d) in differ {
-            let (from, unit) = if k >= e {
-                ((s, k + 1), k - s)
-            } else {
-                ((k, e), 0)
-            };
-            let mut column = vec![0.0; from.1 - from.0];
-            column[unit] = 1.0;
-            self.kernel.cut(from, (s, e), &mut column);
-            w.iter_mut().zip(&column).for_each(|(wi, ci)| *wi += d * ci);
+        if a != 0.0 {
+            let mut ramp = vec![0.0; e - s];
+            self.kernel.solve_ramp(&mut ramp);
+            w.iter_mut()
+                .zip(&ramp)
+                .for_each(|(wi, r)| *wi -= a * self.width * r);
+        }
+        if !differ.is_empty() {
+            let lower = differ.iter().map(|&(k, _)| k).min().map_or(s, |k| k.min(s));
+            let upper = differ
+                .iter()
+                .map(|&(k, _)| k + 1)
+                .max()
+                .map_or(e, |k| k.max(e));
+            let mut columns = vec![0.0; upper - lower];
+            for &(k, d) in differ {
+                columns[k - lower] = d;
+            }
+            self.kernel.cut((lower, upper), (s, e), &mut columns);
+            w.iter_mut().zip(&columns).for_each(|(wi, ci)| *wi += ci);
         }
         let dot = |a: &[f64], b: &[f64]| -> f64 { a.iter().zip(b).map(|(x, y)| x * y).sum() };
         let g_r = &self.work[s..e];
