@@ -244,12 +244,8 @@ impl Marcher {
                 .for_each(|(wi, r)| *wi -= a * self.width * r);
         }
         if !differ.is_empty() {
-            let lower = differ.iter().map(|&(k, _)| k).min().map_or(s, |k| k.min(s));
-            let upper = differ
-                .iter()
-                .map(|&(k, _)| k + 1)
-                .max()
-                .map_or(e, |k| k.max(e));
+            let lower = differ.iter().map(|&(k, _)| k).fold(s, usize::min);
+            let upper = differ.iter().map(|&(k, _)| k + 1).fold(e, usize::max);
             let mut columns = vec![0.0; upper - lower];
             for &(k, d) in differ {
                 columns[k - lower] = d;
