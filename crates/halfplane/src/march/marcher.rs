@@ -482,13 +482,14 @@ impl Marcher {
             }
             let target = load.shear() / self.width - q_old_sum - sum(&self.known);
             // After the first pass, a run that only lost cells at its ends is cut, not solved.
-            run = match (run, changed) {
-                (Some(from), Some(changed)) => self.solve_after_cut(from, &changed),
+            let current = self.single_run();
+            run = match (run, current, changed) {
+                (Some(from), Some(to), Some(changed)) => self.solve_after_cut(from, to, &changed),
                 _ => None,
             };
             if run.is_none() {
                 self.solve_stick(&Rhs::Vector, step)?;
-                run = self.single_run();
+                run = current;
             }
             self.solve_stick(&Rhs::Ones, step)?;
             let (su, sv) = (sum(&self.u), sum(&self.v));

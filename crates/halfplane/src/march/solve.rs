@@ -72,9 +72,9 @@ impl Marcher {
     }
 
     /// The stick solution `u` of a pass whose stick set is the last pass's single run `from`
-    /// less a few cells at its ends, which `changed` (from [`Self::known_increments`]) flagged to
-    /// slip, without a fresh solve: returns the new run, or `None` (nothing done) when the pass
-    /// is not of that kind.
+    /// less a few cells at its ends (`to`, the current single run from [`Self::single_run`]),
+    /// which `changed` (from [`Self::known_increments`]) flagged to slip, without a fresh solve:
+    /// returns `to`, or `None` (nothing done) when the pass is not of that kind.
     ///
     /// The last pass solved `T_S u = b` on its run S. This pass's right-hand side on the
     /// shorter run S' is `b - sum_f d_f G e_f` (the flagged cells' known increments `d_f`, as in
@@ -84,18 +84,13 @@ impl Marcher {
     pub(super) fn solve_after_cut(
         &mut self,
         from: (usize, usize),
+        (s, e): (usize, usize),
         changed: &[(usize, f64)],
     ) -> Option<(usize, usize)> {
         const CUT_MAX: usize = 8;
-        let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
-        let [(s, e)] = runs_of(&set)[..] else {
-            return None;
-        };
         let cut = |i: usize| (from.0..s).contains(&i) || (e..from.1).contains(&i);
-        if self.dense.is_some()
-            || s < from.0
+        if s < from.0
             || e > from.1
-            || s >= e
             || (s - from.0) + (from.1 - e) > CUT_MAX
             || !changed.iter().all(|&(i, _)| cut(i))
         {
@@ -112,7 +107,8 @@ impl Marcher {
     }
 
     /// The single stick run of the current cells, `None` when there are several or none, or
-    /// with the dense solver (for [`Self::solve_after_cut`]).
+    /// with the dense solver (which [`Self::solve_after_cut`] and the curvature term's column
+    /// route do not serve).
     pub(super) fn single_run(&self) -> Option<(usize, usize)> {
         let set: Vec<bool> = self.cells.iter().map(|c| *c == Cell::Stick).collect();
         match runs_of(&set)[..] {
