@@ -24,7 +24,7 @@
 //! Owns the boundaries' search and the reported view. Never solves a linear system itself
 //! (`evaluate.rs` does) and never changes the state the next increment starts from.
 
-use super::chain::{Kink, Model, SAME_KINK};
+use super::chain::{Kink, Model};
 use super::layout::{layout, zones_of, End, Layout, Role};
 use super::marcher::{Cell, Marcher};
 use crate::error::Result;
@@ -226,7 +226,7 @@ impl Marcher {
     }
 
     /// `kinks` (the boundaries') and the kinks of `located` that its stick zones hold further than
-    /// [`SAME_KINK`] cells from a boundary with their stick side (those nearer are reported with
+    /// [`super::chain::SAME_KINK`] cells from a boundary with their stick side (those nearer are reported with
     /// the boundary's), each with the located traction and the pressure there: as reported, for
     /// the stresses' node form. Without them, one increment after a reversal of Q = 300 the
     /// surface `sxx` at the first loading's boundary, held in the stick zone, was 1.7e-2 p0 off
@@ -239,9 +239,7 @@ impl Marcher {
     ) -> Result<Vec<TractionKink>> {
         let w = self.width;
         for k in &located.kinks {
-            let near_a_boundary =
-                (lay.ends.iter()).any(|e| e.side == k.side && (e.at - k.x).abs() < SAME_KINK * w);
-            if near_a_boundary {
+            if (lay.ends.iter()).any(|e| k.next_to(e.at, e.side, w)) {
                 continue;
             }
             let (shear, pressure) = (self.smooth_at(&located.centre, k), self.pressure_at(k.x)?);

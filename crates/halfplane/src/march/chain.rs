@@ -90,6 +90,14 @@ pub(super) struct Kink {
     pub window: f64,
 }
 
+impl Kink {
+    /// Whether it is within [`SAME_KINK`] cells of a boundary at `at` with stick side `side`:
+    /// the stresses' node form, with one node there, reports it with that boundary's.
+    pub(super) fn next_to(&self, at: f64, side: f64, width: f64) -> bool {
+        self.side == side && (self.x - at).abs() < SAME_KINK * width
+    }
+}
+
 /// A located solution as the solve models it.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct Model {
@@ -115,7 +123,7 @@ impl Model {
     /// boundary's (zero without one).
     pub(super) fn kinks_near(&self, at: f64, side: f64, width: f64) -> f64 {
         (self.kinks.iter())
-            .filter(|k| k.side == side && (k.x - at).abs() < SAME_KINK * width)
+            .filter(|k| k.next_to(at, side, width))
             .map(|k| k.amplitude)
             .sum()
     }
